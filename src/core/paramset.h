@@ -1,0 +1,84 @@
+// Typed parameter lists of scene statements ("float radius" [1], "rgb Kd" [.5 .5 .5], ...), as the
+// lrt draft's ParamSet (§B.3). Every item remembers where it was written and whether any factory
+// looked it up, so unused parameters can be reported with their location.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/spectrum.h"
+#include "core/vector.h"
+
+namespace candela {
+
+enum class ParamType {
+  Integer,
+  Float,
+  Point2,
+  Vector2,
+  Point3,   // "point" and "point3"
+  Vector3,  // "vector" and "vector3"
+  Normal3,  // "normal" and "normal3"
+  Spectrum, // "color"/"rgb", "xyz", "spectrum", "blackbody": converted to RGB when parsed
+  Bool,
+  String,
+  Texture
+};
+
+struct ParamItem {
+  ParamType type;
+  std::string name;
+  std::string typeName;  // as written: "rgb", "point3", ...
+  FileLoc loc;
+  std::vector<Float> floats;  // Float, Point*, Vector*, Normal3 (flattened), Spectrum (RGB triples)
+  std::vector<int> ints;
+  std::vector<bool> bools;
+  std::vector<std::string> strings;  // String and Texture
+  mutable bool lookedUp = false;
+};
+
+class ParamSet {
+ public:
+  // Adds or replaces (same name) an item.
+  void add(ParamItem item);
+  bool empty() const { return items_.empty(); }
+  const std::vector<ParamItem>& items() const { return items_; }
+
+  // Single values: the default when the name is absent. A present item of another type, or with
+  // more than one value, is a SceneError at the item's location.
+  Float getOneFloat(const std::string& name, Float def) const;
+  int getOneInt(const std::string& name, int def) const;
+  bool getOneBool(const std::string& name, bool def) const;
+  std::string getOneString(const std::string& name, const std::string& def) const;
+  Point3f getOnePoint3f(const std::string& name, const Point3f& def) const;
+  Vector3f getOneVector3f(const std::string& name, const Vector3f& def) const;
+  Normal3f getOneNormal3f(const std::string& name, const Normal3f& def) const;
+  Spectrum getOneSpectrum(const std::string& name, const Spectrum& def) const;
+  // The texture name of a "texture" item, or "" when absent.
+  std::string getTexture(const std::string& name) const;
+
+  // Arrays: empty when absent.
+  std::vector<Float> getFloatArray(const std::string& name) const;
+  std::vector<int> getIntArray(const std::string& name) const;
+  std::vector<std::string> getStringArray(const std::string& name) const;
+  std::vector<Point2f> getPoint2fArray(const std::string& name) const;  // also from float pairs
+  std::vector<Point3f> getPoint3fArray(const std::string& name) const;
+  std::vector<Vector3f> getVector3fArray(const std::string& name) const;
+  std::vector<Normal3f> getNormal3fArray(const std::string& name) const;
+  std::vector<Spectrum> getSpectrumArray(const std::string& name) const;
+
+  const ParamItem* find(const std::string& name) const;
+  // Where the item was written, for errors about its value (the default when absent).
+  FileLoc locationOf(const std::string& name, const FileLoc& fallback) const;
+
+  // Calls warn(item) for each item no getter has asked for.
+  void forEachUnused(const std::function<void(const ParamItem&)>& warn) const;
+
+ private:
+  std::vector<ParamItem> items_;
+};
+
+}  // namespace candela

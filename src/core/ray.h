@@ -1,0 +1,52 @@
+// Rays and ray differentials (lrt draft §2.5). Directions need not be unit length.
+#pragma once
+
+#include "core/vector.h"
+
+namespace candela {
+
+struct Ray {
+  Point3f o;
+  Vector3f d;
+  mutable Float tMax = kInfinity;
+  Float time = 0;
+  Ray() = default;
+  Ray(const Point3f& o_, const Vector3f& d_, Float tMax_ = kInfinity, Float time_ = 0)
+      : o(o_), d(d_), tMax(tMax_), time(time_) {}
+  Point3f operator()(Float t) const { return o + d * t; }
+  bool hasNaN() const { return o.hasNaN() || d.hasNaN() || std::isnan(tMax); }
+};
+
+// A camera ray plus two rays offset by one pixel in x and y, for texture filtering.
+struct RayDifferential : Ray {
+  bool hasDifferentials = false;
+  Point3f rxOrigin, ryOrigin;
+  Vector3f rxDirection, ryDirection;
+  RayDifferential() = default;
+  RayDifferential(const Point3f& o_, const Vector3f& d_, Float tMax_ = kInfinity, Float time_ = 0)
+      : Ray(o_, d_, tMax_, time_) {}
+  explicit RayDifferential(const Ray& r) : Ray(r) {}
+  void scaleDifferentials(Float s) {
+    rxOrigin = o + (rxOrigin - o) * s;
+    ryOrigin = o + (ryOrigin - o) * s;
+    rxDirection = d + (rxDirection - d) * s;
+    ryDirection = d + (ryDirection - d) * s;
+  }
+};
+
+// Moves p off a surface along n by its floating-point error bound, on the side w points to, so
+// that a ray from there cannot re-hit the surface it left (pbrt 3e §3.9.5).
+inline Point3f offsetRayOrigin(const Point3f& p, const Vector3f& pError, const Normal3f& n,
+                               const Vector3f& w) {
+  Float d = dot(abs(Vector3f(n)), pError);
+  Vector3f offset = Vector3f(n) * d;
+  if (dot(w, n) < 0) offset = -offset;
+  Point3f po = p + offset;
+  for (int i = 0; i < 3; ++i) {
+    if (offset[i] > 0) po[i] = nextFloatUp(po[i]);
+    else if (offset[i] < 0) po[i] = nextFloatDown(po[i]);
+  }
+  return po;
+}
+
+}  // namespace candela
