@@ -1,0 +1,72 @@
+// A point where light interacts with a surface, with the error bound of its position so that rays
+// spawned from it never re-hit the surface they leave (pbrt 3e §2.10, §3.9.5). The lrt draft's
+// DifferentialGeometry (§2.8) is SurfaceInteraction here.
+#pragma once
+
+#include "core/ray.h"
+
+namespace candela {
+
+class Primitive;
+class BSDF;
+
+struct Interaction {
+  Point3f p;
+  Vector3f pError;  // conservative bound on |p - exact p| per axis
+  Normal3f n;       // geometric normal; zero for points in free space
+  Vector3f wo;      // direction back along the incoming ray (unit)
+  Float time = 0;
+
+  Interaction() = default;
+  Interaction(const Point3f& p_, const Normal3f& n_, const Vector3f& pError_, const Vector3f& wo_,
+              Float time_)
+      : p(p_), pError(pError_), n(n_), wo(wo_), time(time_) {}
+  Interaction(const Point3f& p_, Float time_) : p(p_), time(time_) {}
+  bool isSurface() const { return n != Normal3f(); }
+
+  Point3f offsetOrigin(const Vector3f& w) const { return offsetRayOrigin(p, pError, n, w); }
+  Ray spawnRay(const Vector3f& d) const {
+    return Ray(offsetOrigin(d), d, kInfinity, time);
+  }
+  // A segment ending just short of p2 (shadow rays).
+  Ray spawnRayTo(const Point3f& p2) const {
+    Point3f o = offsetOrigin(p2 - p);
+    Vector3f d = p2 - o;
+    return Ray(o, d, 1 - kShadowEpsilon, time);
+  }
+  Ray spawnRayTo(const Interaction& it) const {
+    Point3f o = offsetOrigin(it.p - p);
+    Point3f target = it.offsetOrigin(o - it.p);
+    Vector3f d = target - o;
+    return Ray(o, d, 1 - kShadowEpsilon, time);
+  }
+};
+
+struct SurfaceInteraction : Interaction {
+  Point2f uv;
+  Vector3f dpdu, dpdv;
+  Normal3f dndu, dndv;
+  struct {
+    Normal3f n;
+    Vector3f dpdu, dpdv;
+    Normal3f dndu, dndv;
+  } shading;
+  const Primitive* primitive = nullptr;
+  // Screen-space differentials, filled by computeDifferentials.
+  mutable Vector3f dpdx, dpdy;
+  mutable Float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
+
+  SurfaceInteraction() = default;
+  // n is normalize(dpdu x dpdv), flipped when flipNormal (ReverseOrientation xor handedness swap).
+  SurfaceInteraction(const Point3f& p, const Vector3f& pError, const Point2f& uv,
+                     const Vector3f& wo, const Vector3f& dpdu, const Vector3f& dpdv,
+                     const Normal3f& dndu, const Normal3f& dndv, Float time, bool flipNormal);
+  // Shading frame from interpolated normals etc.; the geometric normal is turned to its side
+  // when orientationIsAuthoritative, else the shading normal is turned to the geometric side.
+  void setShadingGeometry(const Vector3f& dpdus, const Vector3f& dpdvs, const Normal3f& dndus,
+                          const Normal3f& dndvs, bool orientationIsAuthoritative);
+  // Texture-space differentials from the ray's offset rays (lrt draft §11.1.1).
+  void computeDifferentials(const RayDifferential& ray) const;
+};
+
+}  // namespace candela

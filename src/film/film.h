@@ -1,0 +1,51 @@
+// The film: pixel storage for the cropped region of the image (lrt draft §8.1). Each pixel is
+// written only by the task rendering it, so no locking is needed and the sum order is fixed.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/bounds.h"
+#include "core/spectrum.h"
+#include "film/image_buffer.h"
+#include "filters/filter.h"
+
+namespace candela {
+
+class Film {
+ public:
+  // cropWindow in NDC [x0, x1] x [y0, y1]; pixel bounds per the lrt draft §8.1: x from
+  // ceil(xres * x0) to ceil(xres * x1), likewise in y.
+  Film(const Point2i& fullResolution, const Bounds2f& cropWindow, std::unique_ptr<Filter> filter,
+       std::string filename);
+  const Point2i& fullResolution() const { return fullResolution_; }
+  const Bounds2i& pixelBounds() const { return pixelBounds_; }
+  const Filter& filter() const { return *filter_; }
+  const std::string& filename() const { return filename_; }
+
+  // weight is the filter sample's weight; alpha 1 where a surface was hit.
+  void addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);
+  // Weighted mean radiance of a pixel (black if it has no samples).
+  Spectrum pixelValue(const Point2i& pixel) const;
+  Float pixelAlpha(const Point2i& pixel) const;
+  // R, G, B, A of the pixel bounds, top row first.
+  ImageBuffer image() const;
+
+ private:
+  struct Pixel {
+    double rgbSum[3] = {0, 0, 0};
+    double alphaSum = 0;
+    double weightSum = 0;
+  };
+  Pixel& at(const Point2i& p);
+  const Pixel& at(const Point2i& p) const;
+
+  Point2i fullResolution_;
+  Bounds2i pixelBounds_;
+  std::unique_ptr<Filter> filter_;
+  std::string filename_;
+  std::vector<Pixel> pixels_;
+};
+
+}  // namespace candela

@@ -1,0 +1,41 @@
+// Pixel reconstruction filters (lrt draft §7.7). Samples are placed by importance sampling the
+// filter (pbrt 4e §8.8) rather than splatted to neighbouring pixels, so each pixel depends only on
+// its own samples: the image is the same bits for any tile size, thread count or crop window.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/sampling.h"
+
+namespace candela {
+
+struct FilterSample {
+  Point2f p;     // offset from the pixel centre, within the radius
+  Float weight;  // f(p) / pdf(p); constant for filters without negative lobes
+};
+
+class Filter {
+ public:
+  explicit Filter(const Vector2f& radius) : radius_(radius) {}
+  virtual ~Filter() = default;
+  const Vector2f& radius() const { return radius_; }
+  virtual Float evaluate(const Point2f& p) const = 0;
+  // Offset distributed in proportion to |f|, from a tabulated distribution built on first use.
+  FilterSample sample(const Point2f& u) const;
+  // The integral of f over its support, by numerical quadrature on the table.
+  Float integral() const;
+
+ protected:
+  // Concrete filters call this at the end of their constructor.
+  void buildSamplingTable();
+
+ private:
+  Vector2f radius_;
+  std::vector<Float> table_;  // f on a grid over [-r, r]^2
+  int nx_ = 0, ny_ = 0;
+  std::unique_ptr<Distribution2D> distribution_;
+  Float integral_ = 0;
+};
+
+}  // namespace candela
