@@ -19,10 +19,10 @@ enum class ParamType {
   Float,
   Point2,
   Vector2,
-  Point3,   // "point" and "point3"
-  Vector3,  // "vector" and "vector3"
-  Normal3,  // "normal" and "normal3"
-  Spectrum, // "color"/"rgb", "xyz", "spectrum", "blackbody": converted to RGB when parsed
+  Point3,    // "point" and "point3"
+  Vector3,   // "vector" and "vector3"
+  Normal3,   // "normal" and "normal3"
+  Spectrum,  // "color"/"rgb", "xyz", "spectrum", "blackbody": converted to RGB when parsed
   Bool,
   String,
   Texture
@@ -38,7 +38,13 @@ struct ParamItem {
   std::vector<bool> bools;
   std::vector<std::string> strings;  // String and Texture
   mutable bool lookedUp = false;
+
+  // Number of values stored: ints, bools, strings or floats (tuples count each number).
+  int valueCount() const;
 };
+
+// The canonical type name: "integer", "float", "point3", "spectrum", ...
+const char* paramTypeName(ParamType type);
 
 class ParamSet {
  public:
@@ -57,7 +63,8 @@ class ParamSet {
   Vector3f getOneVector3f(const std::string& name, const Vector3f& def) const;
   Normal3f getOneNormal3f(const std::string& name, const Normal3f& def) const;
   Spectrum getOneSpectrum(const std::string& name, const Spectrum& def) const;
-  // The texture name of a "texture" item, or "" when absent.
+  // The texture name of a "texture" item, or "" when absent or of another type (a material then
+  // asks for a constant value of the same name).
   std::string getTexture(const std::string& name) const;
 
   // Arrays: empty when absent.
@@ -70,6 +77,7 @@ class ParamSet {
   std::vector<Normal3f> getNormal3fArray(const std::string& name) const;
   std::vector<Spectrum> getSpectrumArray(const std::string& name) const;
 
+  // The item called name (nullptr when absent); counts as a use.
   const ParamItem* find(const std::string& name) const;
   // Where the item was written, for errors about its value (the default when absent).
   FileLoc locationOf(const std::string& name, const FileLoc& fallback) const;
@@ -78,6 +86,10 @@ class ParamSet {
   void forEachUnused(const std::function<void(const ParamItem&)>& warn) const;
 
  private:
+  const ParamItem* findTyped(const std::string& name, ParamType type) const;
+  const ParamItem* findSingle(const std::string& name, ParamType type) const;
+  const std::vector<Float>* tuples(const std::string& name, ParamType type) const;
+
   std::vector<ParamItem> items_;
 };
 
