@@ -2,6 +2,10 @@
 // left-handed camera space looking down +z, fov along the shorter image axis.
 #pragma once
 
+#include <memory>
+#include <string>
+
+#include "core/paramset.h"
 #include "core/transform.h"
 #include "samplers/sampler.h"
 
@@ -12,8 +16,16 @@ class Camera {
   virtual ~Camera() = default;
   // Returns the ray's weight (0: no ray); the direction is unit length.
   virtual Float generateRay(const CameraSample& sample, Ray* ray) const = 0;
-  // Also fills the offset rays one pixel over in x and y. The default calls generateRay three times.
+  // Also fills the offset rays one pixel over in x and y. The default calls generateRay three
+  // times.
   virtual Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const;
 };
+
+// The camera named by a Camera statement ("perspective"), with pbrt-v2's parameters and
+// defaults; cameraToWorld is the inverse of the CTM at the statement, fullResolution the film's.
+// An unknown name or a bad value is a SceneError at loc.
+std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
+                                     const Transform& cameraToWorld, const Point2i& fullResolution,
+                                     const FileLoc& loc);
 
 }  // namespace candela

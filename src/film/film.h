@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,13 +17,15 @@ namespace candela {
 class Film {
  public:
   // cropWindow in NDC [x0, x1] x [y0, y1]; pixel bounds per the lrt draft §8.1: x from
-  // ceil(xres * x0) to ceil(xres * x1), likewise in y.
+  // ceil(xres * x0) to ceil(xres * x1), likewise in y. The window is clamped to [0, 1] and its
+  // corners ordered first; a window that covers no pixel leaves pixelBounds() empty.
   Film(const Point2i& fullResolution, const Bounds2f& cropWindow, std::unique_ptr<Filter> filter,
        std::string filename);
   const Point2i& fullResolution() const { return fullResolution_; }
   const Bounds2i& pixelBounds() const { return pixelBounds_; }
   const Filter& filter() const { return *filter_; }
   const std::string& filename() const { return filename_; }
+  const Bounds2f& cropWindow() const { return cropWindow_; }
 
   // weight is the filter sample's weight; alpha 1 where a surface was hit.
   void addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);
@@ -38,14 +41,23 @@ class Film {
     double alphaSum = 0;
     double weightSum = 0;
   };
-  Pixel& at(const Point2i& p);
-  const Pixel& at(const Point2i& p) const;
+  size_t offset(const Point2i& p) const;  // p must be inside pixelBounds_
+  Pixel& at(const Point2i& p) { return pixels_[offset(p)]; }
+  const Pixel& at(const Point2i& p) const { return pixels_[offset(p)]; }
 
   Point2i fullResolution_;
+  Bounds2f cropWindow_;
   Bounds2i pixelBounds_;
   std::unique_ptr<Filter> filter_;
   std::string filename_;
   std::vector<Pixel> pixels_;
 };
+
+// The film named by a Film statement ("image"), with pbrt-v2's parameters: xresolution 640,
+// yresolution 480, cropwindow [0 1 0 1], filename "candela.exr" (a filename given in the scene
+// is kept as written). cropOverride (the command line's) replaces the scene's cropwindow.
+std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params,
+                                 std::unique_ptr<Filter> filter, const FileLoc& loc,
+                                 std::optional<Bounds2f> cropOverride);
 
 }  // namespace candela

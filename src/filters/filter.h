@@ -4,8 +4,10 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "core/paramset.h"
 #include "core/sampling.h"
 
 namespace candela {
@@ -19,12 +21,19 @@ class Filter {
  public:
   explicit Filter(const Vector2f& radius) : radius_(radius) {}
   virtual ~Filter() = default;
+  Filter(const Filter&) = delete;
+  Filter& operator=(const Filter&) = delete;
+
   const Vector2f& radius() const { return radius_; }
   virtual Float evaluate(const Point2f& p) const = 0;
   // Offset distributed in proportion to |f|, from a tabulated distribution built on first use.
   FilterSample sample(const Point2f& u) const;
   // The integral of f over its support, by numerical quadrature on the table.
   Float integral() const;
+
+  // The sampling table's resolution (cells per axis over [-r, r]).
+  int tableWidth() const { return nx_; }
+  int tableHeight() const { return ny_; }
 
  protected:
   // Concrete filters call this at the end of their constructor.
@@ -37,5 +46,10 @@ class Filter {
   std::unique_ptr<Distribution2D> distribution_;
   Float integral_ = 0;
 };
+
+// The filter named by a PixelFilter statement: "box", "gaussian" or "mitchell", with pbrt-v2's
+// parameter names and defaults. An unknown name or a bad value is a SceneError at loc.
+std::unique_ptr<Filter> createFilter(const std::string& name, const ParamSet& params,
+                                     const FileLoc& loc);
 
 }  // namespace candela

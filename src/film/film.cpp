@@ -1,0 +1,84 @@
+#include "film/film.h"
+
+#include <cassert>
+#include <cmath>
+
+namespace candela {
+
+namespace {
+Bounds2f normalizedCrop(const Bounds2f& c) {
+  Float x0 = clamp(std::min(c.pMin.x, c.pMax.x), 0, 1),
+        x1 = clamp(std::max(c.pMin.x, c.pMax.x), 0, 1);
+  Float y0 = clamp(std::min(c.pMin.y, c.pMax.y), 0, 1),
+        y1 = clamp(std::max(c.pMin.y, c.pMax.y), 0, 1);
+  return Bounds2f(Point2f(x0, y0), Point2f(x1, y1));
+}
+}  // namespace
+
+Film::Film(const Point2i& fullResolution, const Bounds2f& cropWindow,
+           std::unique_ptr<Filter> filter, std::string filename)
+    : fullResolution_(fullResolution),
+      cropWindow_(normalizedCrop(cropWindow)),
+      filter_(std::move(filter)),
+      filename_(std::move(filename)) {
+  assert(filter_);
+  // The same ceil rule at both ends (lrt draft §8.1), so crop windows sharing an edge share the
+  // pixel column or row there exactly once: a set of tiling crops renders every pixel once.
+  Point2i pMin(int(std::ceil(Float(fullResolution.x) * cropWindow_.pMin.x)),
+               int(std::ceil(Float(fullResolution.y) * cropWindow_.pMin.y)));
+  Point2i pMax(int(std::ceil(Float(fullResolution.x) * cropWindow_.pMax.x)),
+               int(std::ceil(Float(fullResolution.y) * cropWindow_.pMax.y)));
+  pixelBounds_ = Bounds2i(pMin, pMax);
+  pixels_.resize(size_t(pixelBounds_.area()));
+}
+
+size_t Film::offset(const Point2i& p) const {
+  assert(pixelBounds_.inside(p));
+  size_t width = size_t(pixelBounds_.pMax.x - pixelBounds_.pMin.x);
+  return size_t(p.y - pixelBounds_.pMin.y) * width + size_t(p.x - pixelBounds_.pMin.x);
+}
+
+void Film::addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight) {
+  if (!pixelBounds_.inside(pixel)) return;
+  Pixel& px = at(pixel);
+  // Double sums: many spp of widely varying radiance still average without losing low bits.
+  for (int c = 0; c < 3; ++c) px.rgbSum[c] += double(weight) * double(L[c]);
+  px.alphaSum += double(weight) * double(alpha);
+  px.weightSum += double(weight);
+}
+
+Spectrum Film::pixelValue(const Point2i& pixel) const {
+  if (!pixelBounds_.inside(pixel)) return Spectrum(0);
+  const Pixel& px = at(pixel);
+  // The weighted mean, Σ w L / Σ w (lrt draft §8.1; pbrt 4e §5.4.3): with weights f/pdf from the
+  // filter's importance sampling, a constant L comes out exactly constant for any filter.
+  if (px.weightSum == 0) return Spectrum(0);
+  double inv = 1 / px.weightSum;
+  return Spectrum(Float(px.rgbSum[0] * inv), Float(px.rgbSum[1] * inv), Float(px.rgbSum[2] * inv));
+}
+
+Float Film::pixelAlpha(const Point2i& pixel) const {
+  if (!pixelBounds_.inside(pixel)) return 0;
+  const Pixel& px = at(pixel);
+  return px.weightSum == 0 ? Float(0) : Float(px.alphaSum / px.weightSum);
+}
+
+ImageBuffer Film::image() const {
+  int width = std::max(0, pixelBounds_.pMax.x - pixelBounds_.pMin.x);
+  int height = std::max(0, pixelBounds_.pMax.y - pixelBounds_.pMin.y);
+  ImageBuffer img(width, height, {"R", "G", "B", "A"});
+  img.xOffset = pixelBounds_.pMin.x;
+  img.yOffset = pixelBounds_.pMin.y;
+  img.fullWidth = fullResolution_.x;
+  img.fullHeight = fullResolution_.y;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      Point2i p(pixelBounds_.pMin.x + x, pixelBounds_.pMin.y + y);
+      Spectrum L = pixelValue(p);
+      for (int c = 0; c < 3; ++c) img.at(x, y, c) = L[c];
+      img.at(x, y, 3) = pixelAlpha(p);
+    }
+  return img;
+}
+
+}  // namespace candela

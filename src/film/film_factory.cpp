@@ -1,0 +1,58 @@
+// Film "image" -> Film, with pbrt-v2's parameter names and defaults (lrt draft App. C). The
+// display-pipeline parameters of the draft's ImageFilm (gamma, tone mapping, bloom, ...) belong
+// to output and are not read here.
+#include <cmath>
+
+#include "film/film.h"
+
+namespace candela {
+
+namespace {
+
+int resolutionParam(const ParamSet& params, const std::string& name, int def, const FileLoc& loc) {
+  int v = params.getOneInt(name, def);
+  if (v < 1 || v > (1 << 20))
+    throw SceneError(params.locationOf(name, loc),
+                     "\"" + name + "\" must be between 1 and 2^20, got " + std::to_string(v));
+  return v;
+}
+
+Bounds2f cropParam(const ParamSet& params, const FileLoc& loc) {
+  std::vector<Float> c = params.getFloatArray("cropwindow");
+  if (c.empty()) return Bounds2f(Point2f(0, 0), Point2f(1, 1));
+  FileLoc where = params.locationOf("cropwindow", loc);
+  if (c.size() != 4)
+    throw SceneError(
+        where, "\"cropwindow\" needs 4 values (x0 x1 y0 y1), got " + std::to_string(c.size()));
+  return Bounds2f(Point2f(c[0], c[2]), Point2f(c[1], c[3]));
+}
+
+}  // namespace
+
+std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params,
+                                 std::unique_ptr<Filter> filter, const FileLoc& loc,
+                                 std::optional<Bounds2f> cropOverride) {
+  if (name != "image") throw SceneError(loc, "unknown film \"" + name + "\" (known: image)");
+  if (!filter) throw SceneError(loc, "film: no pixel filter");
+  Point2i res(resolutionParam(params, "xresolution", 640, loc),
+              resolutionParam(params, "yresolution", 480, loc));
+  Bounds2f crop = cropParam(params, loc);
+  FileLoc cropLoc = params.locationOf("cropwindow", loc);
+  if (cropOverride) {
+    crop = *cropOverride;
+    cropLoc = loc;
+  }
+  if (std::isnan(crop.pMin.x + crop.pMin.y + crop.pMax.x + crop.pMax.y))
+    throw SceneError(cropLoc, "crop window has a NaN value");
+  std::string filename = params.getOneString("filename", "candela.exr");
+  if (filename.empty()) throw SceneError(params.locationOf("filename", loc), "empty filename");
+  auto film = std::make_unique<Film>(res, crop, std::move(filter), filename);
+  if (film->pixelBounds().empty())
+    throw SceneError(cropLoc, "crop window [" + std::to_string(crop.pMin.x) + " " +
+                                  std::to_string(crop.pMax.x) + " " + std::to_string(crop.pMin.y) +
+                                  " " + std::to_string(crop.pMax.y) + "] covers no pixel of the " +
+                                  std::to_string(res.x) + "x" + std::to_string(res.y) + " image");
+  return film;
+}
+
+}  // namespace candela

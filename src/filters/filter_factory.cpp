@@ -1,0 +1,47 @@
+// PixelFilter "name" -> Filter, with pbrt-v2's parameter names and defaults (lrt draft App. C:
+// xwidth and ywidth are radii; pbrt-v2 defaults them to 0.5 for the box and to 2 otherwise).
+#include <cmath>
+
+#include "filters/box_filter.h"
+#include "filters/filter.h"
+#include "filters/gaussian_filter.h"
+#include "filters/mitchell_filter.h"
+
+namespace candela {
+
+namespace {
+
+Float positiveParam(const ParamSet& params, const std::string& name, Float def,
+                    const FileLoc& loc) {
+  Float v = params.getOneFloat(name, def);
+  if (!(v > 0) || !std::isfinite(v))
+    throw SceneError(params.locationOf(name, loc),
+                     "\"" + name + "\" must be a positive number, got " + std::to_string(v));
+  return v;
+}
+
+Vector2f radiusParam(const ParamSet& params, Float def, const FileLoc& loc) {
+  return Vector2f(positiveParam(params, "xwidth", def, loc),
+                  positiveParam(params, "ywidth", def, loc));
+}
+
+}  // namespace
+
+std::unique_ptr<Filter> createFilter(const std::string& name, const ParamSet& params,
+                                     const FileLoc& loc) {
+  if (name == "box") return std::make_unique<BoxFilter>(radiusParam(params, 0.5f, loc));
+  if (name == "gaussian") {
+    Vector2f radius = radiusParam(params, 2, loc);
+    return std::make_unique<GaussianFilter>(radius, positiveParam(params, "alpha", 2, loc));
+  }
+  if (name == "mitchell") {
+    Vector2f radius = radiusParam(params, 2, loc);
+    Float b = params.getOneFloat("B", 1.f / 3.f), c = params.getOneFloat("C", 1.f / 3.f);
+    if (!std::isfinite(b) || !std::isfinite(c))
+      throw SceneError(loc, "mitchell filter: \"B\" and \"C\" must be finite");
+    return std::make_unique<MitchellFilter>(radius, b, c);
+  }
+  throw SceneError(loc, "unknown pixel filter \"" + name + "\" (known: box, gaussian, mitchell)");
+}
+
+}  // namespace candela

@@ -1,0 +1,18 @@
+#include "samplers/sampler.h"
+
+#include "filters/filter.h"
+
+namespace candela {
+
+CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filter& filter) {
+  FilterSample fs = filter.sample(sampler.getPixel2D());
+  CameraSample cs;
+  // Pixel (x, y) covers [x, x+1) x [y, y+1); its centre is at +0.5 (lrt draft §7.1).
+  cs.pFilm = Point2f(Float(pixel.x) + 0.5f + fs.p.x, Float(pixel.y) + 0.5f + fs.p.y);
+  cs.filterWeight = fs.weight;
+  cs.time = sampler.get1D();
+  cs.pLens = sampler.get2D();
+  return cs;
+}
+
+}  // namespace candela
