@@ -1,0 +1,57 @@
+#include "app/cli_options.h"
+
+#include <CLI/CLI.hpp>
+
+namespace candela {
+
+std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
+  CLI::App app{"candela: a physically based renderer for pbrt scene files.\n"
+               "Renders each WorldEnd of the scene to a scene-linear OpenEXR file with a PNG "
+               "preview."};
+  app.add_option("scene", o->sceneFiles, "Scene files, read in order ('-' or none: stdin)");
+  app.add_option("--nthreads", o->nThreads, "Worker threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--tile-size", o->tileSize, "Tile side in pixels (does not change the image)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("-o,--outfile", o->outfile, "Output EXR (default: the Film's filename)");
+  app.add_option("--preview", o->preview,
+                 "Preview PNG/JPEG path (default: next to the EXR; 'none' for no preview)");
+  app.add_option("--spp", o->spp, "Samples per pixel (overrides the Sampler's)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--seed", o->seed, "Random seed; the image is a pure function of it");
+  std::vector<float> crop;
+  app.add_option("--cropwindow", crop, "Render only x0 x1 y0 y1 of the image (NDC, 0..1)")
+      ->expected(4);
+  app.add_flag("--quick", o->quick, "Quarter resolution, an eighth of the samples");
+  app.add_flag("-q,--quiet", o->quiet, "No progress or statistics output");
+  app.add_flag("-v,--verbose", o->verbose, "More detail");
+  app.add_flag("--stats", o->stats, "Print what the scene built (geometry, Embree, lights...)");
+  app.add_flag("--half", o->half, "Write half-float EXR channels");
+  app.add_option("--compression", o->compression, "EXR compression: zip, piz, dwaa, none")
+      ->check(CLI::IsMember({"zip", "zips", "piz", "dwaa", "dwab", "rle", "pxr24", "b44", "b44a",
+                             "none"}));
+  app.add_option("--ocio", o->ocioConfig, "OpenColorIO config (default: $OCIO, then candela's)");
+  app.add_option("--display", o->display, "OCIO display for the preview");
+  app.add_option("--view", o->view, "OCIO view for the preview");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  if (crop.size() == 4) {
+    for (float c : crop)
+      if (!(c >= 0 && c <= 1)) {
+        std::fprintf(stderr, "candela: error: --cropwindow values must lie in [0, 1]\n");
+        return 2;
+      }
+    if (!(crop[0] < crop[1] && crop[2] < crop[3])) {
+      std::fprintf(stderr, "candela: error: --cropwindow needs x0 < x1 and y0 < y1\n");
+      return 2;
+    }
+    o->cropWindow = Bounds2f(Point2f(crop[0], crop[2]), Point2f(crop[1], crop[3]));
+  }
+  return std::nullopt;
+}
+
+}  // namespace candela

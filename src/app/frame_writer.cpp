@@ -1,0 +1,80 @@
+#include "app/frame_writer.h"
+
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+
+#include "film/output/image_output.h"
+
+namespace candela {
+
+namespace fs = std::filesystem;
+
+FrameWriter::FrameWriter(const CliOptions& cli)
+    : cli_(cli), colorManagement_(std::make_unique<ColorManagement>(cli.ocioConfig)) {}
+
+FrameWriter::~FrameWriter() = default;
+
+namespace {
+std::string joinedSceneNames(const CliOptions& cli) {
+  std::string s;
+  for (const auto& f : cli.sceneFiles) s += (s.empty() ? "" : " ") + f;
+  return s;
+}
+
+// frame 0 keeps the name; later frames of a multi-frame file get "-1", "-2", ... before the
+// extension so they do not overwrite each other.
+fs::path framePath(fs::path p, int frameIndex) {
+  if (frameIndex == 0) return p;
+  fs::path ext = p.extension();
+  p.replace_extension();
+  p += "-" + std::to_string(frameIndex);
+  p += ext;
+  return p;
+}
+}  // namespace
+
+void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
+                        const RenderResult& result, int frameIndex) const {
+  fs::path exrPath = cli_.outfile.empty() ? fs::path(film.filename()) : fs::path(cli_.outfile);
+  if (exrPath.extension() != ".exr") {
+    fs::path original = exrPath;
+    exrPath.replace_extension(".exr");
+    if (!cli_.quiet)
+      std::fprintf(stderr,
+                   "%s: warning: output is scene-linear OpenEXR; writing %s instead of %s\n",
+                   desc.film.loc.str().c_str(), exrPath.string().c_str(),
+                   original.string().c_str());
+  }
+  exrPath = framePath(exrPath, frameIndex);
+
+  ImageBuffer image = film.image();
+  ImageMetadata meta;
+  meta.strings.push_back({"Software", std::string("candela ") + CANDELA_VERSION});
+  meta.strings.push_back({"candela:scene", joinedSceneNames(cli_)});
+  meta.ints.push_back({"candela:spp", spp});
+  meta.strings.push_back({"candela:seed", std::to_string(cli_.seed)});
+  meta.floats.push_back({"candela:renderSeconds", float(result.seconds)});
+  meta.strings.push_back(
+      {"candela:rays",
+       std::to_string(result.rays.intersectionRays + result.rays.shadowRays)});
+  std::time_t now = std::time(nullptr);
+  char date[32];
+  std::strftime(date, sizeof date, "%Y:%m:%d %H:%M:%S", std::localtime(&now));
+  meta.strings.push_back({"DateTime", date});
+
+  ExrOptions exr;
+  exr.half = cli_.half;
+  exr.compression = cli_.compression;
+  exr.colorSpace = colorManagement_->sceneLinearName();
+  writeExr(exrPath.string(), image, meta, exr);
+  if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", exrPath.string().c_str());
+
+  if (cli_.preview == "none") return;
+  fs::path previewPath = cli_.preview.empty() ? fs::path(exrPath).replace_extension(".png")
+                                              : framePath(cli_.preview, frameIndex);
+  writePreview(previewPath.string(), image, *colorManagement_, cli_.display, cli_.view);
+  if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", previewPath.string().c_str());
+}
+
+}  // namespace candela

@@ -1,0 +1,81 @@
+// The candela command: parse scene files, render each WorldEnd, write EXR and a preview.
+// Exit codes: 0 success, 1 scene or render error, 2 usage error.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "accel/embree/embree_device.h"
+#include "app/cli_options.h"
+#include "app/frame_writer.h"
+#include "renderers/sampler_renderer.h"
+#include "scene/parser.h"
+#include "scene/render_job.h"
+#include "scene/scene_builder.h"
+
+using namespace candela;
+
+namespace {
+
+void printWarning(const FileLoc& loc, const std::string& message) {
+  std::fprintf(stderr, "%s: warning: %s\n", loc.str().c_str(), message.c_str());
+}
+
+void renderFrame(const SceneDescription& desc, const CliOptions& cli, const EmbreeDevice& device,
+                 const FrameWriter& writer, int frameIndex) {
+  BuildOptions build;
+  build.seed = cli.seed;
+  build.sppOverride = cli.spp;
+  build.cropWindow = cli.cropWindow;
+  build.quick = cli.quick;
+  if (!cli.quiet) build.warn = printWarning;
+  RenderJob job = buildRenderJob(desc, build, device);
+  if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
+
+  RenderOptions options;
+  options.nThreads = cli.nThreads;
+  options.tileSize = cli.tileSize;
+  options.quiet = cli.quiet;
+  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  RenderResult result = renderer.render(*job.scene, *job.film, options);
+  if (!cli.quiet) {
+    uint64_t rays = result.rays.intersectionRays + result.rays.shadowRays;
+    std::fprintf(stderr,
+                 "Render time %.2fs, %llu samples (%.3g samples/s), %llu rays (%.3g rays/s: "
+                 "%llu closest-hit, %llu shadow)\n",
+                 result.seconds, (unsigned long long)result.samples,
+                 result.samples / std::max(result.seconds, 1e-9), (unsigned long long)rays,
+                 rays / std::max(result.seconds, 1e-9),
+                 (unsigned long long)result.rays.intersectionRays,
+                 (unsigned long long)result.rays.shadowRays);
+    if (result.nonFiniteSamples > 0)
+      std::fprintf(stderr, "warning: %llu samples had NaN or infinite radiance and were dropped\n",
+                   (unsigned long long)result.nonFiniteSamples);
+  }
+  writer.write(*job.film, desc, job.sampler->samplesPerPixel(), result, frameIndex);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CliOptions cli;
+  if (auto code = parseCommandLine(argc, argv, &cli)) return *code;
+  if (cli.sceneFiles.empty()) cli.sceneFiles.push_back("-");
+  try {
+    EmbreeDevice device;
+    FrameWriter writer(cli);
+    int frame = 0;
+    SceneBuilder builder(
+        [&](SceneDescription&& desc) { renderFrame(desc, cli, device, writer, frame++); },
+        cli.quiet ? SceneBuilder::WarningCallback() : SceneBuilder::WarningCallback(printWarning));
+    for (const std::string& file : cli.sceneFiles) parseFile(file, builder);
+    builder.endOfInput(FileLoc{cli.sceneFiles.back(), 0, 0});
+    if (frame == 0) {
+      std::fprintf(stderr, "candela: error: the scene has no WorldBegin/WorldEnd: nothing to render\n");
+      return 1;
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,23 @@
+// Direct lighting estimators shared by the integrators (pbrt 2e §15.1): one light sample and one
+// BSDF sample combined by multiple importance sampling with the power heuristic.
+#pragma once
+
+#include "integrators/integrator.h"
+#include "reflection/bsdf.h"
+
+namespace candela {
+
+// Radiance reflected at it toward it.wo from light `light`, one sample of each strategy.
+Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
+                        const Point2f& uLight, const Point2f& uScattering, Float uComponent,
+                        const Scene& scene, RayStats& stats);
+
+// Every light, each with its nSamples samples.
+Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf,
+                                const Scene& scene, IntegratorContext& ctx);
+
+// One light chosen uniformly, its estimate divided by the choice probability.
+Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, const Scene& scene,
+                               IntegratorContext& ctx);
+
+}  // namespace candela

@@ -1,0 +1,61 @@
+#include "integrators/path.h"
+
+#include "accel/primitive.h"
+#include "integrators/light_sampling.h"
+#include "materials/material.h"
+
+namespace candela {
+
+Spectrum PathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene,
+                            IntegratorContext& ctx, Float* alpha) const {
+  Spectrum l(0), beta(1);
+  RayDifferential ray(cameraRay);
+  bool specularBounce = false;
+  *alpha = 0;
+  for (int bounces = 0;; ++bounces) {
+    SurfaceInteraction isect;
+    bool hit = scene.intersect(ray, &isect, ctx.stats);
+    if (bounces == 0) *alpha = hit ? 1 : 0;
+    // Emission is counted here only where next-event estimation could not have sampled it.
+    if (bounces == 0 || specularBounce) {
+      if (hit) {
+        if (isect.primitive->areaLight) l += beta * isect.primitive->areaLight->L(isect, -ray.d);
+      } else {
+        for (const Light* light : scene.lights()) l += beta * light->Le(ray);
+      }
+    }
+    if (!hit || bounces >= maxDepth_) break;
+    const Primitive& prim = *isect.primitive;
+    if (!prim.material) {
+      ray = RayDifferential(isect.spawnRay(ray.d));
+      --bounces;
+      continue;
+    }
+    if (bounces == 0) isect.computeDifferentials(ray);
+    const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
+    if (bsdf->numComponents(kAllBxDF & ~kSpecular) > 0)
+      l += beta * uniformSampleOneLight(isect, *bsdf, scene, ctx);
+
+    Vector3f wi;
+    Float pdf;
+    BxDFType sampledType;
+    Spectrum f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf,
+                               kAllBxDF, &sampledType);
+    if (f.isBlack() || pdf == 0) break;
+    beta *= f * (absDot(wi, isect.shading.n) / pdf);
+    specularBounce = (sampledType & kSpecular) != 0;
+    ray = RayDifferential(isect.spawnRay(wi));
+
+    // Russian roulette: continue with probability tied to the throughput (pbrt 2e §15.3 uses
+    // min(0.5, y); the throughput's largest channel wastes less on coloured paths).
+    if (bounces >= rrStartDepth_) {
+      Float q = std::max(Float(0.05), 1 - beta.maxComponent());
+      if (ctx.sampler.get1D() < q) break;
+      beta /= 1 - q;
+    }
+    if (!beta.isFinite()) break;
+  }
+  return l;
+}
+
+}  // namespace candela

@@ -1,0 +1,33 @@
+// "area"/"diffuse": uniform emitted radiance L from one side of a shape, or both when twosided
+// (lrt draft §13.4).
+#pragma once
+
+#include "lights/light.h"
+#include "shapes/shape.h"
+
+namespace candela {
+
+class DiffuseAreaLight : public AreaLight {
+ public:
+  DiffuseAreaLight(const Shape* shape, const Spectrum& lEmit, int nSamples, bool twoSided)
+      : AreaLight(nSamples), shape_(shape), lEmit_(lEmit), twoSided_(twoSided) {}
+  Spectrum L(const Interaction& it, const Vector3f& w) const override {
+    return (twoSided_ || dot(it.n, w) > 0) ? lEmit_ : Spectrum(0);
+  }
+  Spectrum sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi, Float* pdf,
+                    VisibilityTester* vis) const override;
+  Float pdfLi(const Interaction& ref, const Vector3f& wi) const override {
+    return shape_->pdf(ref, wi);
+  }
+  Spectrum power() const override {
+    return lEmit_ * ((twoSided_ ? 2 : 1) * shape_->area() * kPi);
+  }
+  bool isDelta() const override { return false; }
+
+ private:
+  const Shape* shape_;
+  Spectrum lEmit_;
+  bool twoSided_;
+};
+
+}  // namespace candela

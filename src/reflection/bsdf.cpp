@@ -1,0 +1,80 @@
+#include "reflection/bsdf.h"
+
+namespace candela {
+
+BSDF::BSDF(const SurfaceInteraction& si, Float eta_)
+    : eta(eta_), ns_(si.shading.n), ng_(si.n) {
+  // Gram-Schmidt dpdu against the shading normal; fall back to any frame when degenerate.
+  Vector3f s = si.shading.dpdu - ns_ * dot(ns_, si.shading.dpdu);
+  if (s.lengthSquared() > 1e-20f && std::isfinite(s.lengthSquared())) {
+    ss_ = normalize(s);
+    ts_ = cross(ns_, ss_);
+  } else {
+    coordinateSystem(ns_, &ss_, &ts_);
+  }
+}
+
+int BSDF::numComponents(int flags) const {
+  int n = 0;
+  for (int i = 0; i < count_; ++i)
+    if (bxdfs_[i]->matches(flags)) ++n;
+  return n;
+}
+
+Spectrum BSDF::f(const Vector3f& woW, const Vector3f& wiW, int flags) const {
+  Vector3f wi = worldToLocal(wiW), wo = worldToLocal(woW);
+  if (wo.z == 0) return Spectrum(0);
+  bool reflect = dot(wiW, ng_) * dot(woW, ng_) > 0;
+  Spectrum f(0);
+  for (int i = 0; i < count_; ++i) {
+    const BxDF* b = bxdfs_[i];
+    if (!b->matches(flags)) continue;
+    if ((reflect && (b->type() & kReflection)) || (!reflect && (b->type() & kTransmission)))
+      f += b->f(wo, wi);
+  }
+  return f;
+}
+
+Spectrum BSDF::sampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point2f& u2,
+                       Float* pdf, int flags, BxDFType* sampledType) const {
+  int matching = numComponents(flags);
+  *pdf = 0;
+  if (sampledType) *sampledType = BxDFType(0);
+  if (matching == 0) return Spectrum(0);
+  int comp = std::min(int(u1 * matching), matching - 1);
+  const BxDF* bxdf = nullptr;
+  for (int i = 0, count = comp; i < count_; ++i)
+    if (bxdfs_[i]->matches(flags) && count-- == 0) {
+      bxdf = bxdfs_[i];
+      break;
+    }
+  Vector3f wo = worldToLocal(woW), wi;
+  if (wo.z == 0) return Spectrum(0);
+  BxDFType type = bxdf->type();
+  Spectrum f = bxdf->sampleF(wo, &wi, u2, pdf, &type);
+  if (sampledType) *sampledType = type;
+  if (*pdf == 0) return Spectrum(0);
+  *wiW = localToWorld(wi);
+  if (!(bxdf->type() & kSpecular) && matching > 1) {
+    for (int i = 0; i < count_; ++i)
+      if (bxdfs_[i] != bxdf && bxdfs_[i]->matches(flags)) *pdf += bxdfs_[i]->pdf(wo, wi);
+  }
+  if (matching > 1) *pdf /= Float(matching);
+  if (!(bxdf->type() & kSpecular)) f = this->f(woW, *wiW, flags);
+  return f;
+}
+
+Float BSDF::pdf(const Vector3f& woW, const Vector3f& wiW, int flags) const {
+  Vector3f wo = worldToLocal(woW), wi = worldToLocal(wiW);
+  if (wo.z == 0) return 0;
+  Float pdf = 0;
+  int matching = 0;
+  for (int i = 0; i < count_; ++i)
+    if (bxdfs_[i]->matches(flags)) {
+      ++matching;
+      pdf += bxdfs_[i]->pdf(wo, wi);
+    }
+  return matching > 0 ? pdf / Float(matching) : 0;
+}
+
+}  // namespace candela

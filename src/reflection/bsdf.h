@@ -1,0 +1,44 @@
+// A set of BxDFs at a surface point with its shading frame (lrt draft §10.1). The geometric
+// normal decides whether a pair of directions is reflection or transmission, which avoids light
+// leaks through shading normals (Veach's fix).
+#pragma once
+
+#include "core/interaction.h"
+#include "reflection/bxdf.h"
+
+namespace candela {
+
+class BSDF {
+ public:
+  static constexpr int kMaxBxDFs = 8;
+  explicit BSDF(const SurfaceInteraction& si, Float eta = 1);
+  void add(const BxDF* b) {
+    if (count_ < kMaxBxDFs) bxdfs_[count_++] = b;
+  }
+  int numComponents(int flags = kAllBxDF) const;
+  Vector3f worldToLocal(const Vector3f& v) const {
+    return Vector3f(dot(v, ss_), dot(v, ts_), dot(v, ns_));
+  }
+  Vector3f localToWorld(const Vector3f& v) const {
+    return Vector3f(ss_.x * v.x + ts_.x * v.y + ns_.x * v.z, ss_.y * v.x + ts_.y * v.y + ns_.y * v.z,
+                    ss_.z * v.x + ts_.z * v.y + ns_.z * v.z);
+  }
+  Spectrum f(const Vector3f& woW, const Vector3f& wiW, int flags = kAllBxDF) const;
+  // Picks a matching component with u1, samples it with u2, and (for non-specular picks) returns
+  // the full mixture's value and pdf.
+  Spectrum sampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point2f& u2, Float* pdf,
+                   int flags = kAllBxDF, BxDFType* sampledType = nullptr) const;
+  // Mixture pdf over the matching components (the draft averages over all; the matching count is
+  // what sampleF uses, so that is the consistent choice).
+  Float pdf(const Vector3f& woW, const Vector3f& wiW, int flags = kAllBxDF) const;
+  const Normal3f& geometricNormal() const { return ng_; }
+  const Float eta;
+
+ private:
+  Vector3f ns_, ss_, ts_;
+  Normal3f ng_;
+  const BxDF* bxdfs_[kMaxBxDFs] = {};
+  int count_ = 0;
+};
+
+}  // namespace candela

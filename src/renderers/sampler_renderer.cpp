@@ -1,0 +1,93 @@
+#include "renderers/sampler_renderer.h"
+
+#include <oneapi/tbb/enumerable_thread_specific.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+#include <xmmintrin.h>
+#include <pmmintrin.h>
+
+#include <atomic>
+#include <chrono>
+
+#include "core/progress.h"
+
+namespace candela {
+
+namespace {
+struct TileCounters {
+  RayStats rays;
+  uint64_t samples = 0;
+  uint64_t nonFinite = 0;
+};
+}  // namespace
+
+RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
+                                     const RenderOptions& options) const {
+  auto start = std::chrono::steady_clock::now();
+  const Bounds2i bounds = film.pixelBounds();
+  const int tile = std::max(1, options.tileSize);
+  const int nx = (bounds.pMax.x - bounds.pMin.x + tile - 1) / tile;
+  const int ny = (bounds.pMax.y - bounds.pMin.y + tile - 1) / tile;
+  const int spp = sampler_.samplesPerPixel();
+  // Offset rays one pixel over are too far apart when a pixel gets many samples (pbrt 3e §1.4.3).
+  const Float differentialScale = 1 / std::sqrt(Float(std::max(1, spp)));
+
+  ProgressReporter progress(int64_t(nx) * ny, "Rendering",
+                            ProgressReporter::modeFor(options.quiet));
+  tbb::enumerable_thread_specific<TileCounters> counters;
+
+  auto renderTile = [&](int tileIndex) {
+    // Denormals are rare in rendering and slow on x86; Embree also asks for FTZ/DAZ.
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    TileCounters& c = counters.local();
+    std::unique_ptr<Sampler> sampler = sampler_.clone();
+    MemoryArena arena;
+    IntegratorContext ctx{*sampler, arena, c.rays};
+    int tx = tileIndex % nx, ty = tileIndex / nx;
+    int x0 = bounds.pMin.x + tx * tile, y0 = bounds.pMin.y + ty * tile;
+    int x1 = std::min(x0 + tile, bounds.pMax.x), y1 = std::min(y0 + tile, bounds.pMax.y);
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        Point2i pixel(x, y);
+        for (int s = 0; s < spp; ++s) {
+          sampler->startPixelSample(pixel, s);
+          CameraSample cs = getCameraSample(*sampler, pixel, film.filter());
+          RayDifferential ray;
+          Float rayWeight = camera_.generateRayDifferential(cs, &ray);
+          ray.scaleDifferentials(differentialScale);
+          ++c.rays.cameraRays;
+          Spectrum l(0);
+          Float alpha = 0;
+          if (rayWeight > 0) l = integrator_.Li(ray, scene, ctx, &alpha) * rayWeight;
+          if (!l.isFinite()) {
+            ++c.nonFinite;
+            l = Spectrum(0);
+          }
+          film.addSample(pixel, l, alpha, cs.filterWeight);
+          ++c.samples;
+          arena.reset();
+        }
+      }
+    progress.update(1);
+  };
+
+  int threads = options.nThreads > 0 ? options.nThreads : tbb::info::default_concurrency();
+  tbb::task_arena taskArena(threads);
+  taskArena.execute([&] {
+    tbb::parallel_for(0, nx * ny, [&](int i) { renderTile(i); });
+  });
+  progress.done();
+
+  RenderResult result;
+  for (const TileCounters& c : counters) {
+    result.rays += c.rays;
+    result.samples += c.samples;
+    result.nonFiniteSamples += c.nonFinite;
+  }
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace candela

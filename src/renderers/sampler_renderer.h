@@ -1,0 +1,39 @@
+// The sampler renderer (lrt draft §1.3, pbrt 2e §1.3.4): image tiles rendered in parallel under
+// oneTBB, each with its own sampler clone, memory arena and counters. A pixel's value depends only
+// on (scene, pixel, samples per pixel, seed), never on tiling or threads.
+#pragma once
+
+#include <cstdint>
+
+#include "cameras/camera.h"
+#include "film/film.h"
+#include "integrators/integrator.h"
+
+namespace candela {
+
+struct RenderOptions {
+  int nThreads = 0;    // 0: all cores
+  int tileSize = 16;   // pixels per tile side
+  bool quiet = false;  // no progress output
+};
+
+struct RenderResult {
+  double seconds = 0;
+  uint64_t samples = 0;
+  RayStats rays;
+  uint64_t nonFiniteSamples = 0;  // NaN or infinite radiance, dropped and counted
+};
+
+class SamplerRenderer {
+ public:
+  SamplerRenderer(const Camera& camera, const Sampler& sampler, const SurfaceIntegrator& integrator)
+      : camera_(camera), sampler_(sampler), integrator_(integrator) {}
+  RenderResult render(const Scene& scene, Film& film, const RenderOptions& options) const;
+
+ private:
+  const Camera& camera_;
+  const Sampler& sampler_;
+  const SurfaceIntegrator& integrator_;
+};
+
+}  // namespace candela

@@ -1,0 +1,30 @@
+// Name -> object for materials, lights and integrators. Unknown names are errors that list the
+// names that exist.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "integrators/integrator.h"
+#include "lights/light.h"
+#include "materials/material.h"
+#include "scene/scene_description.h"
+#include "scene/texture_factory.h"
+
+namespace candela {
+
+[[noreturn]] void throwUnknownPlugin(const FileLoc& loc, const std::string& kind,
+                                     const std::string& name,
+                                     const std::vector<std::string>& known);
+
+std::unique_ptr<Material> createMaterial(const MaterialDesc& desc, TextureFactory& textures);
+// The material of shapes that name none (pbrt: matte with Kd 0.5).
+std::unique_ptr<Material> createDefaultMaterial(TextureFactory& textures);
+
+std::unique_ptr<Light> createLight(const LightDesc& desc);
+std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* shape);
+
+std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc);
+
+}  // namespace candela

@@ -1,0 +1,196 @@
+#include "scene/render_job.h"
+
+#include <sstream>
+
+#include "accel/embree/embree_aggregate.h"
+#include "scene/plugin_factories.h"
+#include "scene/shape_factory.h"
+#include "shapes/triangle_mesh.h"
+
+namespace candela {
+
+RenderJob::RenderJob() = default;
+RenderJob::~RenderJob() = default;
+RenderJob::RenderJob(RenderJob&&) noexcept = default;
+RenderJob& RenderJob::operator=(RenderJob&&) noexcept = default;
+
+std::string BuildStats::report() const {
+  std::ostringstream os;
+  os << "Scene statistics\n";
+  for (const auto& [kind, n] : shapesByKind) os << "  shapes: " << kind << "  " << n << "\n";
+  os << "  triangle meshes  " << triangleMeshes << "\n";
+  os << "  lights  " << lights << " (area lights " << areaLights << ")\n";
+  os << "  materials  " << materials << "\n";
+  os << "  textures loaded  " << textures << "\n";
+  os << "  aggregate  " << aggregate.name << "\n";
+  for (const auto& [what, n] : aggregate.counts) os << "  " << what << "  " << n << "\n";
+  return os.str();
+}
+
+namespace {
+
+void reportUnused(const PluginDesc& d, const WarningSink& warn) {
+  if (!warn) return;
+  d.params.forEachUnused([&](const ParamItem& item) {
+    warn(item.loc,
+         "parameter \"" + item.typeName + " " + item.name + "\" of '" + d.name + "' was not used");
+  });
+}
+
+// A copy of params with an integer item replaced (for --quick and --spp).
+ParamSet withInt(const ParamSet& params, const std::string& name, int value, const FileLoc& loc) {
+  ParamSet p = params;
+  ParamItem item;
+  item.type = ParamType::Integer;
+  item.name = name;
+  item.typeName = "integer";
+  item.loc = loc;
+  item.ints = {value};
+  p.add(item);
+  return p;
+}
+
+PluginDesc orDefault(const PluginDesc& d, const std::string& name) {
+  if (!d.name.empty()) return d;
+  PluginDesc r = d;
+  r.name = name;
+  return r;
+}
+
+// Materials are created once per statement, and only when a shape uses them.
+class MaterialCache {
+ public:
+  MaterialCache(const SceneDescription& desc, RenderJob& job, const WarningSink& warn)
+      : desc_(desc), job_(job), warn_(warn) {}
+  const Material* get(int index) {
+    if (auto it = byIndex_.find(index); it != byIndex_.end()) return it->second;
+    std::unique_ptr<Material> m;
+    if (index < 0) {
+      m = createDefaultMaterial(*job_.textures);
+    } else {
+      const MaterialDesc& md = desc_.materials.at(size_t(index));
+      m = createMaterial(md, *job_.textures);
+      reportUnused(md, warn_);
+    }
+    job_.materials.push_back(std::move(m));
+    return byIndex_[index] = job_.materials.back().get();
+  }
+
+ private:
+  const SceneDescription& desc_;
+  RenderJob& job_;
+  const WarningSink& warn_;
+  std::map<int, const Material*> byIndex_;
+};
+
+void addShape(const ShapeDesc& sd, const Transform& objectToWorld, bool allowAreaLight,
+              MaterialCache& materials, RenderJob& job, const WarningSink& warn) {
+  CreatedShapes created = createShapes(sd, objectToWorld);
+  reportUnused(sd, warn);
+  const Material* material = materials.get(sd.material);
+  if (sd.objectToWorld.isAnimated() && warn)
+    warn(sd.loc, "animated shape transforms are not supported yet; using the start transform");
+  if (created.mesh) {
+    job.meshes.push_back(std::move(created.mesh));
+    ++job.stats.triangleMeshes;
+  }
+  for (auto& shape : created.shapes) {
+    const AreaLight* area = nullptr;
+    if (sd.areaLight && allowAreaLight) {
+      std::unique_ptr<AreaLight> light = createAreaLight(*sd.areaLight, shape.get());
+      area = light.get();
+      job.lights.push_back(std::move(light));
+      ++job.stats.areaLights;
+    }
+    ++job.stats.shapesByKind[shape->kind()];
+    job.primitives.push_back(Primitive{shape.get(), material, area});
+    job.shapes.push_back(std::move(shape));
+  }
+  if (sd.areaLight && allowAreaLight) reportUnused(*sd.areaLight, warn);
+  if (sd.areaLight && !allowAreaLight && warn)
+    warn(sd.loc, "area lights inside object instances are ignored (as in pbrt)");
+}
+
+}  // namespace
+
+RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& options,
+                         const EmbreeDevice& device) {
+  const WarningSink& warn = options.warn;
+  RenderJob job;
+  job.textures = std::make_unique<TextureFactory>(desc.textures);
+
+  if (!desc.volumes.empty())
+    throw SceneError(desc.volumes.front().loc, "volume regions are not supported yet");
+  if (!desc.renderer.name.empty() && desc.renderer.name != "sampler" && warn)
+    warn(desc.renderer.loc, "renderer '" + desc.renderer.name +
+                                "' is not available; using the sampler renderer (as pbrt does)");
+
+  // Film and camera.
+  PluginDesc filmDesc = orDefault(desc.film, "image");
+  ParamSet filmParams = filmDesc.params;
+  if (options.quick) {
+    int xres = std::max(1, filmParams.getOneInt("xresolution", 640) / 4);
+    int yres = std::max(1, filmParams.getOneInt("yresolution", 480) / 4);
+    filmParams = withInt(withInt(filmParams, "xresolution", xres, filmDesc.loc), "yresolution",
+                         yres, filmDesc.loc);
+  }
+  PluginDesc filterDesc = orDefault(desc.filter, "box");
+  job.film = createFilm(filmDesc.name, filmParams,
+                        createFilter(filterDesc.name, filterDesc.params, filterDesc.loc),
+                        filmDesc.loc, options.cropWindow);
+  reportUnused(filterDesc, warn);
+  CameraDesc camDesc = desc.camera;
+  if (camDesc.name.empty()) camDesc.name = "perspective";
+  job.camera = createCamera(camDesc.name, camDesc.params, camDesc.cameraToWorld.start,
+                            job.film->fullResolution(), camDesc.loc);
+  reportUnused(camDesc, warn);
+
+  // Sampler and integrator.
+  PluginDesc samplerDesc = orDefault(desc.sampler, "stratified");
+  int spp = options.sppOverride;
+  job.sampler =
+      createSampler(samplerDesc.name, samplerDesc.params, options.seed, spp, samplerDesc.loc);
+  if (options.quick && spp == 0) {
+    int quickSpp = std::max(1, job.sampler->samplesPerPixel() / 8);
+    job.sampler = createSampler(samplerDesc.name, samplerDesc.params, options.seed, quickSpp,
+                                samplerDesc.loc);
+  }
+  reportUnused(samplerDesc, warn);
+  PluginDesc integratorDesc = !desc.integrator.name.empty()
+                                  ? desc.integrator
+                                  : orDefault(desc.surfaceIntegrator, "directlighting");
+  job.integrator = createSurfaceIntegrator(integratorDesc);
+  reportUnused(integratorDesc, warn);
+
+  // Geometry, materials and lights: only what the shapes use.
+  MaterialCache materials(desc, job, warn);
+  for (const ShapeDesc& sd : desc.shapes)
+    addShape(sd, sd.objectToWorld.start, true, materials, job, warn);
+  // Object instances are flattened: each use adds the prototype's shapes under its transform.
+  for (const InstanceUse& use : desc.instanceUses) {
+    const InstanceDefinition* def = nullptr;
+    for (const auto& d : desc.instanceDefinitions)
+      if (d.name == use.name) def = &d;
+    if (!def) throw SceneError(use.loc, "unknown object '" + use.name + "'");
+    for (const ShapeDesc& sd : def->shapes)
+      addShape(sd, use.instanceToWorld.start * sd.objectToWorld.start, false, materials, job, warn);
+  }
+  for (const LightDesc& ld : desc.lights) {
+    job.lights.push_back(createLight(ld));
+    reportUnused(ld, warn);
+  }
+  job.stats.lights = long(job.lights.size());
+  job.stats.materials = long(job.materials.size());
+  job.stats.textures = job.textures->texturesCreated();
+
+  job.aggregate = std::make_unique<EmbreeAggregate>(device, job.primitives);
+  job.stats.aggregate = job.aggregate->stats();
+  std::vector<const Light*> lights;
+  for (const auto& l : job.lights) lights.push_back(l.get());
+  job.scene = std::make_unique<Scene>(job.aggregate.get(), std::move(lights));
+  for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
+  job.integrator->preprocess(*job.scene);
+  return job;
+}
+
+}  // namespace candela

@@ -1,0 +1,75 @@
+// Everything one WorldEnd renders, created from a SceneDescription by the factories: only what
+// the scene uses is built (DESIGN.md, data flow step 2). The job owns every object; the Scene,
+// renderer and integrator hold plain pointers into it.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "accel/aggregate.h"
+#include "cameras/camera.h"
+#include "film/film.h"
+#include "integrators/integrator.h"
+#include "lights/light.h"
+#include "materials/material.h"
+#include "samplers/sampler.h"
+#include "scene/scene.h"
+#include "scene/scene_description.h"
+#include "scene/texture_factory.h"
+#include "shapes/shape.h"
+
+namespace candela {
+
+class EmbreeDevice;
+struct TriangleMesh;
+
+using WarningSink = std::function<void(const FileLoc&, const std::string&)>;
+
+struct BuildOptions {
+  uint64_t seed = 0;
+  int sppOverride = 0;                 // 0: the sampler's own count
+  std::optional<Bounds2f> cropWindow;  // NDC, overrides the film's
+  bool quick = false;                  // quarter resolution, an eighth of the samples
+  WarningSink warn;                    // may be empty
+};
+
+// What was created, for --stats and for tests that check nothing unneeded was built.
+struct BuildStats {
+  std::map<std::string, long> shapesByKind;  // "sphere", "triangle", ...
+  long triangleMeshes = 0;
+  long lights = 0, areaLights = 0;
+  long materials = 0;
+  long textures = 0;
+  AggregateStats aggregate;
+  std::string report() const;
+};
+
+struct RenderJob {
+  RenderJob();
+  ~RenderJob();
+  RenderJob(RenderJob&&) noexcept;
+  RenderJob& operator=(RenderJob&&) noexcept;
+
+  std::unique_ptr<TextureFactory> textures;
+  std::vector<std::unique_ptr<Material>> materials;
+  std::vector<std::unique_ptr<TriangleMesh>> meshes;
+  std::vector<std::unique_ptr<Shape>> shapes;
+  std::vector<std::unique_ptr<Light>> lights;
+  std::vector<Primitive> primitives;
+  std::unique_ptr<Aggregate> aggregate;
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<Film> film;
+  std::unique_ptr<Camera> camera;
+  std::unique_ptr<Sampler> sampler;
+  std::unique_ptr<SurfaceIntegrator> integrator;
+  BuildStats stats;
+};
+
+RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& options,
+                         const EmbreeDevice& device);
+
+}  // namespace candela

@@ -1,0 +1,46 @@
+// What integrators render: the aggregate and the lights. Everything it points to is owned by the
+// RenderJob the factories built.
+#pragma once
+
+#include <vector>
+
+#include "accel/aggregate.h"
+#include "lights/light.h"
+
+namespace candela {
+
+// Per-thread counters, summed by the renderer at the end.
+struct RayStats {
+  uint64_t cameraRays = 0;
+  uint64_t intersectionRays = 0;  // closest-hit queries, camera rays included
+  uint64_t shadowRays = 0;        // occlusion queries
+  RayStats& operator+=(const RayStats& o) {
+    cameraRays += o.cameraRays;
+    intersectionRays += o.intersectionRays;
+    shadowRays += o.shadowRays;
+    return *this;
+  }
+};
+
+class Scene {
+ public:
+  Scene(const Aggregate* aggregate, std::vector<const Light*> lights)
+      : aggregate_(aggregate), lights_(std::move(lights)) {}
+  bool intersect(const Ray& ray, SurfaceInteraction* isect, RayStats& stats) const {
+    ++stats.intersectionRays;
+    return aggregate_->intersect(ray, isect);
+  }
+  bool unoccluded(const VisibilityTester& vis, RayStats& stats) const {
+    ++stats.shadowRays;
+    return vis.unoccluded(*aggregate_);
+  }
+  const std::vector<const Light*>& lights() const { return lights_; }
+  const Aggregate& aggregate() const { return *aggregate_; }
+  Bounds3f worldBound() const { return aggregate_->worldBound(); }
+
+ private:
+  const Aggregate* aggregate_;
+  std::vector<const Light*> lights_;
+};
+
+}  // namespace candela

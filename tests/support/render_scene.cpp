@@ -1,0 +1,41 @@
+#include "support/render_scene.h"
+
+#include "accel/embree/embree_device.h"
+#include "scene/parser.h"
+#include "scene/scene_builder.h"
+
+namespace candela::test {
+
+namespace {
+const EmbreeDevice& testDevice() {
+  static EmbreeDevice device;  // one per test process, as in the application
+  return device;
+}
+
+RenderedScene run(const std::string& text, const BuildOptions& build, const RenderOptions* render) {
+  RenderedScene out;
+  SceneBuilder builder(
+      [&](SceneDescription&& desc) {
+        out.jobs.push_back(buildRenderJob(desc, build, testDevice()));
+        if (render) {
+          RenderJob& job = out.jobs.back();
+          SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+          out.results.push_back(renderer.render(*job.scene, *job.film, *render));
+        }
+      },
+      {});
+  parseString(text, "test.pbrt", builder);
+  builder.endOfInput(FileLoc{"test.pbrt", 0, 0});
+  return out;
+}
+}  // namespace
+
+RenderedScene renderSceneText(const std::string& text, const TestRenderOptions& options) {
+  return run(text, options.build, &options.render);
+}
+
+RenderedScene buildSceneText(const std::string& text, const BuildOptions& options) {
+  return run(text, options, nullptr);
+}
+
+}  // namespace candela::test
