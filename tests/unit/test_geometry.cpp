@@ -45,12 +45,12 @@ TEST(Bounds, DefaultIsEmptyAndUnionGrows) {
   b = unionOf(b, Point3f(1, 2, 3));
   EXPECT_FALSE(b.empty());
   EXPECT_EQ(b.pMin, Point3f(1, 2, 3));
-  b = unionOf(b, Point3f(-1, 5, 0));
+  b = unionOf(b, Point3f(-1, 6, 0));
   EXPECT_EQ(b.pMin, Point3f(-1, 2, 0));
-  EXPECT_EQ(b.pMax, Point3f(1, 5, 3));
+  EXPECT_EQ(b.pMax, Point3f(1, 6, 3));
   EXPECT_TRUE(b.inside(Point3f(0, 3, 1)));
-  EXPECT_FALSE(b.inside(Point3f(0, 6, 1)));
-  EXPECT_FLOAT_EQ(b.surfaceArea(), 2 * (2 * 3 + 2 * 3 + 3 * 3));
+  EXPECT_FALSE(b.inside(Point3f(0, 7, 1)));
+  EXPECT_FLOAT_EQ(b.surfaceArea(), 2 * (2 * 4 + 2 * 3 + 4 * 3));
   EXPECT_EQ(b.maximumExtent(), 1);
   Bounds3f u = unionOf(b, Bounds3f(Point3f(10, 10, 10), Point3f(11, 11, 11)));
   EXPECT_EQ(u.pMax, Point3f(11, 11, 11));

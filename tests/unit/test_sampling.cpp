@@ -82,7 +82,7 @@ TEST(Sampling, DirectionSamplersMatchTheirPdfs) {
   chiSquareDirections(sampleCosineHemisphere,
                       [](const Vector3f& w) { return w.z > 0 ? cosineHemispherePdf(w.z) : 0; },
                       "cosine hemisphere");
-  Float cosMax = 0.8f;
+  Float cosMax = 0.75f;  // on a cell boundary: the midpoint quadrature assumes pdfs smooth within cells
   chiSquareDirections([&](Point2f u) { return sampleUniformCone(u, cosMax); },
                       [&](const Vector3f& w) { return w.z >= cosMax ? uniformConePdf(cosMax) : 0; },
                       "uniform cone");
