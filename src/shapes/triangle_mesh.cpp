@@ -1,0 +1,339 @@
+#include "shapes/triangle_mesh.h"
+
+#include <filesystem>
+
+#include "core/sampling.h"
+#include "shapes/ply_reader.h"
+
+namespace candela {
+
+TriangleMesh::TriangleMesh(const Transform& objectToWorld, bool reverseOrientation_,
+                           std::vector<int> indices_, std::vector<Point3f> p_,
+                           std::vector<Normal3f> n_, std::vector<Vector3f> s_,
+                           std::vector<Point2f> uv_)
+    : indices(std::move(indices_)),
+      p(std::move(p_)),
+      n(std::move(n_)),
+      s(std::move(s_)),
+      uv(std::move(uv_)),
+      reverseOrientation(reverseOrientation_),
+      transformSwapsHandedness(objectToWorld.swapsHandedness()) {
+  // World space once, so that intersection needs no transform (lrt draft §3.6).
+  for (Point3f& q : p) q = objectToWorld(q);
+  for (Normal3f& nn : n) {
+    nn = objectToWorld(nn);
+    if (reverseOrientation) nn = -nn;
+  }
+  for (Vector3f& ss : s) ss = objectToWorld(ss);
+}
+
+namespace {
+
+struct TriangleHit {
+  Float b0, b1, b2, t;
+};
+
+// The watertight ray-triangle test (pbrt 3e §3.6.2, after Woop et al. 2013): translate the
+// vertices to the ray origin, permute so that the ray's largest direction component is z, and
+// shear so the ray runs along +z; the edge functions of the 2D projections then decide the hit
+// exactly when they are evaluated consistently, falling back to double when one is zero.
+bool intersectTriangle(const Point3f& p0, const Point3f& p1, const Point3f& p2, const Ray& ray,
+                       TriangleHit* hit) {
+  if (ray.o.hasNaN() || ray.d.hasNaN() || std::isnan(ray.tMax)) return false;
+  Vector3f p0t = p0 - ray.o, p1t = p1 - ray.o, p2t = p2 - ray.o;
+  int kz = maxDimension(abs(ray.d));
+  int kx = kz + 1 == 3 ? 0 : kz + 1;
+  int ky = kx + 1 == 3 ? 0 : kx + 1;
+  Vector3f d = permute(ray.d, kx, ky, kz);
+  if (d.z == 0) return false;
+  p0t = permute(p0t, kx, ky, kz);
+  p1t = permute(p1t, kx, ky, kz);
+  p2t = permute(p2t, kx, ky, kz);
+  Float sx = -d.x / d.z, sy = -d.y / d.z, sz = 1 / d.z;
+  p0t.x += sx * p0t.z;
+  p0t.y += sy * p0t.z;
+  p1t.x += sx * p1t.z;
+  p1t.y += sy * p1t.z;
+  p2t.x += sx * p2t.z;
+  p2t.y += sy * p2t.z;
+
+  Float e0 = p1t.x * p2t.y - p1t.y * p2t.x;
+  Float e1 = p2t.x * p0t.y - p2t.y * p0t.x;
+  Float e2 = p0t.x * p1t.y - p0t.y * p1t.x;
+  if (e0 == 0 || e1 == 0 || e2 == 0) {
+    // An edge through the ray in float: decide it in double (products of floats are exact).
+    e0 = Float(double(p1t.x) * p2t.y - double(p1t.y) * p2t.x);
+    e1 = Float(double(p2t.x) * p0t.y - double(p2t.y) * p0t.x);
+    e2 = Float(double(p0t.x) * p1t.y - double(p0t.y) * p1t.x);
+  }
+  if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return false;
+  Float det = e0 + e1 + e2;
+  if (det == 0 || std::isnan(det)) return false;
+
+  // Scaled distance, compared without dividing by det until the hit is known.
+  p0t.z *= sz;
+  p1t.z *= sz;
+  p2t.z *= sz;
+  Float tScaled = e0 * p0t.z + e1 * p1t.z + e2 * p2t.z;
+  if (det < 0 && (tScaled >= 0 || tScaled < ray.tMax * det)) return false;
+  if (det > 0 && (tScaled <= 0 || tScaled > ray.tMax * det)) return false;
+  Float invDet = 1 / det;
+  Float t = tScaled * invDet;
+  if (!(t < ray.tMax)) return false;
+
+  // Reject t inside the test's own rounding error: such a "hit" is the triangle a spawned ray
+  // leaves (pbrt 3e §3.9.6).
+  Float maxZt = maxComponent(abs(Vector3f(p0t.z, p1t.z, p2t.z)));
+  Float deltaZ = gamma(3) * maxZt;
+  Float maxXt = maxComponent(abs(Vector3f(p0t.x, p1t.x, p2t.x)));
+  Float maxYt = maxComponent(abs(Vector3f(p0t.y, p1t.y, p2t.y)));
+  Float deltaX = gamma(5) * (maxXt + maxZt);
+  Float deltaY = gamma(5) * (maxYt + maxZt);
+  Float deltaE = 2 * (gamma(2) * maxXt * maxYt + deltaY * maxXt + deltaX * maxYt);
+  Float maxE = maxComponent(abs(Vector3f(e0, e1, e2)));
+  Float deltaT = 3 * (gamma(3) * maxE * maxZt + deltaE * maxZt + deltaZ * maxE) * std::abs(invDet);
+  if (!(t > deltaT)) return false;
+
+  hit->b0 = e0 * invDet;
+  hit->b1 = e1 * invDet;
+  hit->b2 = e2 * invDet;
+  hit->t = t;
+  return true;
+}
+
+// Per-vertex (u, v), or the draft's default parameterisation (lrt draft §3.6.2).
+void vertexUVs(const TriangleMesh& mesh, const int* v, Point2f uv[3]) {
+  if (mesh.uv.empty()) {
+    uv[0] = Point2f(0, 0);
+    uv[1] = Point2f(1, 0);
+    uv[2] = Point2f(1, 1);
+  } else {
+    for (int i = 0; i < 3; ++i) uv[i] = mesh.uv[v[i]];
+  }
+}
+
+Vector3f absWeighted(Float b, const Point3f& p) { return abs(Vector3f(p)) * std::abs(b); }
+
+}  // namespace
+
+Bounds3f TriangleShape::worldBound() const {
+  const int* vi = v();
+  return unionOf(Bounds3f(mesh_->p[vi[0]], mesh_->p[vi[1]]), mesh_->p[vi[2]]);
+}
+
+bool TriangleShape::intersect(const Ray& ray, Float* tHit, SurfaceInteraction* isect) const {
+  const int* vi = v();
+  TriangleHit hit;
+  if (!intersectTriangle(mesh_->p[vi[0]], mesh_->p[vi[1]], mesh_->p[vi[2]], ray, &hit))
+    return false;
+  *tHit = hit.t;
+  if (isect) *isect = interactionAt(ray, hit.b1, hit.b2, hit.t);
+  return true;
+}
+
+bool TriangleShape::intersectP(const Ray& ray) const {
+  const int* vi = v();
+  TriangleHit hit;
+  return intersectTriangle(mesh_->p[vi[0]], mesh_->p[vi[1]], mesh_->p[vi[2]], ray, &hit);
+}
+
+Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2) const {
+  const int* vi = v();
+  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
+  Vector3f c = cross(p0 - p2, p1 - p2);
+  Normal3f n = c.lengthSquared() > 0 ? Normal3f(normalize(c)) : Normal3f(0, 0, 1);
+  // Interpolated normals decide the side (pbrt 3e §3.6.3); otherwise the winding, corrected for
+  // mirroring transforms and turned by ReverseOrientation (lrt draft §2.8).
+  if (!mesh_->n.empty()) {
+    Normal3f ns = mesh_->n[vi[0]] * b0 + mesh_->n[vi[1]] * b1 + mesh_->n[vi[2]] * b2;
+    if (ns.lengthSquared() > 0) return faceForward(n, Vector3f(ns));
+    return n;
+  }
+  return mesh_->reverseOrientation != mesh_->transformSwapsHandedness ? -n : n;
+}
+
+SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1, Float b2,
+                                                Float /*t*/) const {
+  const int* vi = v();
+  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
+  Float b0 = 1 - b1 - b2;
+  Point2f uv[3];
+  vertexUVs(*mesh_, vi, uv);
+
+  // dp/du and dp/dv from the 2x2 system dp02 = duv02 (dpdu dpdv)^T, dp12 likewise (lrt draft
+  // §3.6.2); degenerate (u, v) gives an arbitrary frame around the normal.
+  Vector2f duv02 = uv[0] - uv[2], duv12 = uv[1] - uv[2];
+  Vector3f dp02 = p0 - p2, dp12 = p1 - p2;
+  Float determinant = duv02.x * duv12.y - duv02.y * duv12.x;
+  bool degenerateUV = std::abs(determinant) < 1e-8f;
+  Float invDet = degenerateUV ? 0 : 1 / determinant;
+  Vector3f dpdu, dpdv;
+  if (!degenerateUV) {
+    dpdu = (dp02 * duv12.y - dp12 * duv02.y) * invDet;
+    dpdv = (dp12 * duv02.x - dp02 * duv12.x) * invDet;
+  }
+  if (degenerateUV || cross(dpdu, dpdv).lengthSquared() == 0) {
+    Vector3f ng = cross(p2 - p0, p1 - p0);
+    Vector3f axis = ng.lengthSquared() > 0 ? normalize(ng) : Vector3f(0, 0, 1);
+    coordinateSystem(axis, &dpdu, &dpdv);
+  }
+
+  // The hit point from barycentrics, with its bound (pbrt 3e §3.9.4: gamma(7) for the
+  // interpolation of Embree's or our b's).
+  Point3f pHit = p0 * b0 + p1 * b1 + p2 * b2;
+  Vector3f pError = (absWeighted(b0, p0) + absWeighted(b1, p1) + absWeighted(b2, p2)) * gamma(7);
+  Point2f uvHit = uv[0] * b0 + uv[1] * b1 + uv[2] * b2;
+  Vector3f wo = -ray.d;
+  Float woLen = wo.length();
+  if (woLen > 0) wo = wo / woLen;
+  SurfaceInteraction isect(pHit, pError, uvHit, wo, dpdu, dpdv, Normal3f(), Normal3f(), ray.time,
+                           false);
+  isect.n = isect.shading.n = orientedNormal(b0, b1, b2);
+
+  if (mesh_->n.empty() && mesh_->s.empty()) return isect;
+  // Shading frame from interpolated normal and tangent (lrt draft §3.6.3): ss is the tangent
+  // (or dp/du) made perpendicular to ns, ts completes the frame, so cross(ss, ts) = ns.
+  Normal3f ns = isect.n;
+  if (!mesh_->n.empty()) {
+    Normal3f ni = mesh_->n[vi[0]] * b0 + mesh_->n[vi[1]] * b1 + mesh_->n[vi[2]] * b2;
+    if (ni.lengthSquared() > 0) ns = normalize(ni);
+  }
+  Vector3f ss = isect.dpdu;
+  if (!mesh_->s.empty()) {
+    Vector3f si = mesh_->s[vi[0]] * b0 + mesh_->s[vi[1]] * b1 + mesh_->s[vi[2]] * b2;
+    if (si.lengthSquared() > 0) ss = si;
+  }
+  Vector3f ts = cross(ns, ss);
+  if (ts.lengthSquared() > 0) {
+    ts = normalize(ts);
+    ss = cross(ts, ns);
+  } else {
+    coordinateSystem(Vector3f(ns), &ss, &ts);
+  }
+  // dn/du, dn/dv of the interpolated normal, by the same 2x2 solve as dp/du, dp/dv.
+  Normal3f dndu, dndv;
+  if (!mesh_->n.empty() && !degenerateUV) {
+    Normal3f dn1 = mesh_->n[vi[0]] - mesh_->n[vi[2]], dn2 = mesh_->n[vi[1]] - mesh_->n[vi[2]];
+    dndu = (dn1 * duv12.y - dn2 * duv02.y) * invDet;
+    dndv = (dn2 * duv02.x - dn1 * duv12.x) * invDet;
+  }
+  isect.setShadingGeometry(ss, ts, dndu, dndv, true);
+  return isect;
+}
+
+Float TriangleShape::area() const {
+  const int* vi = v();
+  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
+  return 0.5f * cross(p1 - p0, p2 - p0).length();
+}
+
+Interaction TriangleShape::sample(const Point2f& u, Float* pdf) const {
+  const int* vi = v();
+  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
+  Point2f b = sampleUniformTriangle(u);
+  Float b2 = 1 - b.x - b.y;
+  Point3f p = p0 * b.x + p1 * b.y + p2 * b2;
+  Vector3f pError = (absWeighted(b.x, p0) + absWeighted(b.y, p1) + absWeighted(b2, p2)) * gamma(6);
+  Float a = area();
+  *pdf = a > 0 ? 1 / a : 0;
+  return Interaction(p, orientedNormal(b.x, b.y, b2), pError, Vector3f(), 0);
+}
+
+std::vector<std::unique_ptr<Shape>> createTriangleShapes(const TriangleMesh* mesh) {
+  std::vector<std::unique_ptr<Shape>> shapes;
+  shapes.reserve(mesh->triangleCount());
+  for (int i = 0; i < mesh->triangleCount(); ++i)
+    shapes.push_back(std::make_unique<TriangleShape>(mesh, i));
+  return shapes;
+}
+
+namespace {
+
+// Checks sizes and index ranges; err(name, message) throws at the parameter named.
+template <typename ErrorFn>
+void validateMesh(const std::vector<int>& indices, size_t nP, size_t nN, size_t nS, size_t nUV,
+                  const char* uvName, ErrorFn err) {
+  if (indices.empty()) err("indices", "mesh has no triangles");
+  if (indices.size() % 3 != 0)
+    err("indices",
+        "\"indices\" has " + std::to_string(indices.size()) + " entries, not a multiple of 3");
+  for (size_t i = 0; i < indices.size(); ++i)
+    if (indices[i] < 0 || size_t(indices[i]) >= nP)
+      err("indices", "\"indices\"[" + std::to_string(i) + "] = " + std::to_string(indices[i]) +
+                         " is out of range: there are " + std::to_string(nP) + " vertices in P");
+  auto checkSize = [&](const char* name, size_t n) {
+    if (n == 0 || n == nP) return;
+    // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
+    std::string message = "\"";
+    message += name;
+    message += "\" has " + std::to_string(n) + " values but P has " + std::to_string(nP);
+    err(name, message + " vertices");
+  };
+  checkSize("N", nN);
+  checkSize("S", nS);
+  checkSize(uvName, nUV);
+}
+
+std::vector<std::unique_ptr<Shape>> finishMesh(std::unique_ptr<TriangleMesh> mesh,
+                                               std::unique_ptr<TriangleMesh>* meshOut) {
+  std::vector<std::unique_ptr<Shape>> shapes = createTriangleShapes(mesh.get());
+  *meshOut = std::move(mesh);
+  return shapes;
+}
+
+}  // namespace
+
+std::vector<std::unique_ptr<Shape>> createTriangleMeshShapes(const Transform& objectToWorld,
+                                                             bool reverseOrientation,
+                                                             const ParamSet& params,
+                                                             std::unique_ptr<TriangleMesh>* meshOut,
+                                                             const FileLoc& loc) {
+  std::vector<int> indices = params.getIntArray("indices");
+  std::vector<Point3f> P = params.getPoint3fArray("P");
+  std::vector<Normal3f> N = params.getNormal3fArray("N");
+  std::vector<Vector3f> S = params.getVector3fArray("S");
+  const char* uvName = params.find("uv") ? "uv" : "st";
+  std::vector<Point2f> uv = params.getPoint2fArray(uvName);
+
+  auto err = [&](const std::string& name, const std::string& message) {
+    throw SceneError(params.locationOf(name, loc), "trianglemesh: " + message);
+  };
+  if (P.empty()) err("P", "missing vertex positions \"P\" (point3)");
+  // A single triangle may omit its indices (pbrt 3e's trianglemesh does the same).
+  if (indices.empty() && !params.find("indices") && P.size() == 3) indices = {0, 1, 2};
+  if (indices.empty()) err("indices", "missing \"indices\" (integer, 3 per triangle)");
+  validateMesh(indices, P.size(), N.size(), S.size(), uv.size(), uvName, err);
+  return finishMesh(
+      std::make_unique<TriangleMesh>(objectToWorld, reverseOrientation, std::move(indices),
+                                     std::move(P), std::move(N), std::move(S), std::move(uv)),
+      meshOut);
+}
+
+std::vector<std::unique_ptr<Shape>> createPlyMeshShapes(
+    const Transform& objectToWorld, bool reverseOrientation, const ParamSet& params,
+    std::unique_ptr<TriangleMesh>* meshOut, const FileLoc& loc, const std::string& baseDir) {
+  std::string filename = params.getOneString("filename", "");
+  FileLoc fileLoc = params.locationOf("filename", loc);
+  if (filename.empty()) throw SceneError(fileLoc, "plymesh: missing \"string filename\"");
+  std::filesystem::path path(filename);
+  if (path.is_relative() && !baseDir.empty()) path = std::filesystem::path(baseDir) / path;
+
+  PlyMesh ply;
+  try {
+    ply = readPly(path.string());
+  } catch (const FileError& e) {
+    throw SceneError(fileLoc, std::string("plymesh: ") + e.what());
+  }
+  auto err = [&](const std::string& /*name*/, const std::string& message) {
+    throw SceneError(fileLoc, "plymesh \"" + path.string() + "\": " + message);
+  };
+  if (ply.positions.empty()) err("P", "no vertices");
+  validateMesh(ply.indices, ply.positions.size(), ply.normals.size(), 0, ply.uvs.size(), "uv", err);
+  return finishMesh(
+      std::make_unique<TriangleMesh>(objectToWorld, reverseOrientation, std::move(ply.indices),
+                                     std::move(ply.positions), std::move(ply.normals),
+                                     std::vector<Vector3f>(), std::move(ply.uvs)),
+      meshOut);
+}
+
+}  // namespace candela
