@@ -26,14 +26,9 @@ if(NOT TARGET OpenColorIO::OpenColorIO)
   target_link_libraries(OpenColorIO::OpenColorIO INTERFACE PkgConfig::OCIO)
 endif()
 
-# OpenSubdiv's config references static libraries Debian does not ship.
-find_path(OSD_INCLUDE_DIR opensubdiv/far/topologyRefiner.h REQUIRED)
-find_library(OSD_CPU_LIBRARY NAMES osdCPU REQUIRED)
-if(NOT TARGET OpenSubdiv::osdCPU)
-  add_library(OpenSubdiv::osdCPU SHARED IMPORTED)
-  set_target_properties(OpenSubdiv::osdCPU PROPERTIES
-    IMPORTED_LOCATION "${OSD_CPU_LIBRARY}" INTERFACE_INCLUDE_DIRECTORIES "${OSD_INCLUDE_DIR}")
-endif()
+# OpenSubdiv's own config is broken on Debian: our Find module (MODULE mode skips the config).
+list(APPEND CMAKE_MODULE_PATH ${CMAKE_CURRENT_LIST_DIR})
+find_package(OpenSubdiv MODULE REQUIRED)
 
 if(CANDELA_BUILD_TESTS)
   find_package(GTest CONFIG REQUIRED)

@@ -53,7 +53,7 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   meta.strings.push_back({"Software", std::string("candela ") + CANDELA_VERSION});
   meta.strings.push_back({"candela:scene", joinedSceneNames(cli_)});
   meta.ints.push_back({"candela:spp", spp});
-  meta.strings.push_back({"candela:seed", std::to_string(cli_.seed)});
+  meta.strings.push_back({"candela:seed", std::to_string(cli_.seed)});  // 64-bit: no EXR int type
   meta.floats.push_back({"candela:renderSeconds", float(result.seconds)});
   meta.strings.push_back(
       {"candela:rays",
@@ -67,6 +67,8 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   exr.half = cli_.half;
   exr.compression = cli_.compression;
   exr.colorSpace = colorManagement_->sceneLinearName();
+  // Resolved through the config, so a custom config's scene-linear space still gets its primaries.
+  exr.chromaticities = colorManagement_->chromaticities(exr.colorSpace);
   writeExr(exrPath.string(), image, meta, exr);
   if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", exrPath.string().c_str());
 
