@@ -10,7 +10,7 @@
 namespace candela {
 
 struct AggregateStats {
-  std::string name;                   // "embree", "kdtree", ...
+  std::string name;                    // "embree", "kdtree", ...
   std::map<std::string, long> counts;  // e.g. "embree triangle meshes", "embree user geometries"
 };
 

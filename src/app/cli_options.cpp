@@ -5,9 +5,10 @@
 namespace candela {
 
 std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
-  CLI::App app{"candela: a physically based renderer for pbrt scene files.\n"
-               "Renders each WorldEnd of the scene to a scene-linear OpenEXR file with a PNG "
-               "preview."};
+  CLI::App app{
+      "candela: a physically based renderer for pbrt scene files.\n"
+      "Renders each WorldEnd of the scene to a scene-linear OpenEXR file with a PNG "
+      "preview."};
   app.add_option("scene", o->sceneFiles, "Scene files, read in order ('-' or none: stdin)");
   app.add_option("--nthreads", o->nThreads, "Worker threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
@@ -28,8 +29,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   app.add_flag("--stats", o->stats, "Print what the scene built (geometry, Embree, lights...)");
   app.add_flag("--half", o->half, "Write half-float EXR channels");
   app.add_option("--compression", o->compression, "EXR compression: zip, piz, dwaa, none")
-      ->check(CLI::IsMember({"zip", "zips", "piz", "dwaa", "dwab", "rle", "pxr24", "b44", "b44a",
-                             "none"}));
+      ->check(CLI::IsMember(
+          {"zip", "zips", "piz", "dwaa", "dwab", "rle", "pxr24", "b44", "b44a", "none"}));
   app.add_option("--ocio", o->ocioConfig, "OpenColorIO config (default: $OCIO, then candela's)");
   app.add_option("--display", o->display, "OCIO display for the preview");
   app.add_option("--view", o->view, "OCIO view for the preview");

@@ -41,10 +41,9 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
     fs::path original = exrPath;
     exrPath.replace_extension(".exr");
     if (!cli_.quiet)
-      std::fprintf(stderr,
-                   "%s: warning: output is scene-linear OpenEXR; writing %s instead of %s\n",
-                   desc.film.loc.str().c_str(), exrPath.string().c_str(),
-                   original.string().c_str());
+      std::fprintf(
+          stderr, "%s: warning: output is scene-linear OpenEXR; writing %s instead of %s\n",
+          desc.film.loc.str().c_str(), exrPath.string().c_str(), original.string().c_str());
   }
   exrPath = framePath(exrPath, frameIndex);
 
@@ -56,8 +55,7 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   meta.strings.push_back({"candela:seed", std::to_string(cli_.seed)});  // 64-bit: no EXR int type
   meta.floats.push_back({"candela:renderSeconds", float(result.seconds)});
   meta.strings.push_back(
-      {"candela:rays",
-       std::to_string(result.rays.intersectionRays + result.rays.shadowRays)});
+      {"candela:rays", std::to_string(result.rays.intersectionRays + result.rays.shadowRays)});
   std::time_t now = std::time(nullptr);
   char date[32];
   std::strftime(date, sizeof date, "%Y:%m:%d %H:%M:%S", std::localtime(&now));

@@ -70,7 +70,8 @@ int main(int argc, char** argv) {
     for (const std::string& file : cli.sceneFiles) parseFile(file, builder);
     builder.endOfInput(FileLoc{cli.sceneFiles.back(), 0, 0});
     if (frame == 0) {
-      std::fprintf(stderr, "candela: error: the scene has no WorldBegin/WorldEnd: nothing to render\n");
+      std::fprintf(stderr,
+                   "candela: error: the scene has no WorldBegin/WorldEnd: nothing to render\n");
       return 1;
     }
   } catch (const std::exception& e) {

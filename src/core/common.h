@@ -56,16 +56,20 @@ inline float nextFloatUp(float v) {
   if (std::isinf(v) && v > 0.f) return v;
   if (v == -0.f) v = 0.f;
   uint32_t ui = floatToBits(v);
-  if (v >= 0) ++ui;
-  else --ui;
+  if (v >= 0)
+    ++ui;
+  else
+    --ui;
   return bitsToFloat(ui);
 }
 inline float nextFloatDown(float v) {
   if (std::isinf(v) && v < 0.f) return v;
   if (v == 0.f) v = -0.f;
   uint32_t ui = floatToBits(v);
-  if (v > 0) --ui;
-  else ++ui;
+  if (v > 0)
+    --ui;
+  else
+    ++ui;
   return bitsToFloat(ui);
 }
 

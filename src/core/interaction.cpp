@@ -27,8 +27,10 @@ void SurfaceInteraction::setShadingGeometry(const Vector3f& dpdus, const Vector3
   Vector3f c = cross(dpdus, dpdvs);
   if (c.lengthSquared() > 0) {
     shading.n = Normal3f(normalize(c));
-    if (orientationIsAuthoritative) n = faceForward(n, Vector3f(shading.n));
-    else shading.n = faceForward(shading.n, Vector3f(n));
+    if (orientationIsAuthoritative)
+      n = faceForward(n, Vector3f(shading.n));
+    else
+      shading.n = faceForward(shading.n, Vector3f(n));
   }
   shading.dpdu = dpdus;
   shading.dpdv = dpdvs;
@@ -54,9 +56,12 @@ void SurfaceInteraction::computeDifferentials(const RayDifferential& ray) const 
   // Least-squares-free 2x2 solve on the two axes best conditioned for this normal: drop the
   // axis of the largest normal component.
   int dim[2];
-  if (std::abs(n.x) > std::abs(n.y) && std::abs(n.x) > std::abs(n.z)) dim[0] = 1, dim[1] = 2;
-  else if (std::abs(n.y) > std::abs(n.z)) dim[0] = 0, dim[1] = 2;
-  else dim[0] = 0, dim[1] = 1;
+  if (std::abs(n.x) > std::abs(n.y) && std::abs(n.x) > std::abs(n.z))
+    dim[0] = 1, dim[1] = 2;
+  else if (std::abs(n.y) > std::abs(n.z))
+    dim[0] = 0, dim[1] = 2;
+  else
+    dim[0] = 0, dim[1] = 1;
   Float a00 = dpdu[dim[0]], a01 = dpdv[dim[0]], a10 = dpdu[dim[1]], a11 = dpdv[dim[1]];
   Float det = a00 * a11 - a01 * a10;
   if (std::abs(det) < 1e-20f) {

@@ -25,9 +25,7 @@ struct Interaction {
   bool isSurface() const { return n != Normal3f(); }
 
   Point3f offsetOrigin(const Vector3f& w) const { return offsetRayOrigin(p, pError, n, w); }
-  Ray spawnRay(const Vector3f& d) const {
-    return Ray(offsetOrigin(d), d, kInfinity, time);
-  }
+  Ray spawnRay(const Vector3f& d) const { return Ray(offsetOrigin(d), d, kInfinity, time); }
   // A segment ending just short of p2 (shadow rays).
   Ray spawnRayTo(const Point3f& p2) const {
     Point3f o = offsetOrigin(p2 - p);

@@ -42,8 +42,7 @@ class MemoryArena {
     for (auto& b : used_) ::operator delete(b.ptr, std::align_val_t(alignof(std::max_align_t)));
     for (auto& b : available_)
       ::operator delete(b.ptr, std::align_val_t(alignof(std::max_align_t)));
-    if (current_.ptr)
-      ::operator delete(current_.ptr, std::align_val_t(alignof(std::max_align_t)));
+    if (current_.ptr) ::operator delete(current_.ptr, std::align_val_t(alignof(std::max_align_t)));
   }
 
  private:

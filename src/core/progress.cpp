@@ -52,7 +52,8 @@ void ProgressReporter::print(int64_t done, bool final) {
     std::fprintf(stderr, "\r%s [%s] %5.1f%% (%.1fs|%.1fs)%s", title_.c_str(), bar.c_str(),
                  100 * fraction, t, final ? t : eta, final ? "\n" : "");
   } else {
-    if (final) std::fprintf(stderr, "%s: done in %.1fs\n", title_.c_str(), t);
+    if (final)
+      std::fprintf(stderr, "%s: done in %.1fs\n", title_.c_str(), t);
     else
       std::fprintf(stderr, "%s: %5.1f%% after %.1fs, about %.1fs left\n", title_.c_str(),
                    100 * fraction, t, eta);

@@ -43,8 +43,10 @@ inline Point3f offsetRayOrigin(const Point3f& p, const Vector3f& pError, const N
   if (dot(w, n) < 0) offset = -offset;
   Point3f po = p + offset;
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0) po[i] = nextFloatUp(po[i]);
-    else if (offset[i] < 0) po[i] = nextFloatDown(po[i]);
+    if (offset[i] > 0)
+      po[i] = nextFloatUp(po[i]);
+    else if (offset[i] < 0)
+      po[i] = nextFloatDown(po[i]);
   }
   return po;
 }

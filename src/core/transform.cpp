@@ -147,12 +147,12 @@ Point3f Transform::apply(const Point3f& p, Vector3f* absError) const {
   Float yp = m[1][0] * x + m[1][1] * y + m[1][2] * z + m[1][3];
   Float zp = m[2][0] * x + m[2][1] * y + m[2][2] * z + m[2][3];
   Float wp = m[3][0] * x + m[3][1] * y + m[3][2] * z + m[3][3];
-  Float xe = std::abs(m[0][0] * x) + std::abs(m[0][1] * y) + std::abs(m[0][2] * z) +
-             std::abs(m[0][3]);
-  Float ye = std::abs(m[1][0] * x) + std::abs(m[1][1] * y) + std::abs(m[1][2] * z) +
-             std::abs(m[1][3]);
-  Float ze = std::abs(m[2][0] * x) + std::abs(m[2][1] * y) + std::abs(m[2][2] * z) +
-             std::abs(m[2][3]);
+  Float xe =
+      std::abs(m[0][0] * x) + std::abs(m[0][1] * y) + std::abs(m[0][2] * z) + std::abs(m[0][3]);
+  Float ye =
+      std::abs(m[1][0] * x) + std::abs(m[1][1] * y) + std::abs(m[1][2] * z) + std::abs(m[1][3]);
+  Float ze =
+      std::abs(m[2][0] * x) + std::abs(m[2][1] * y) + std::abs(m[2][2] * z) + std::abs(m[2][3]);
   *absError = Vector3f(xe, ye, ze) * gamma(3);
   if (wp == 1) return Point3f(xp, yp, zp);
   return Point3f(xp, yp, zp) / wp;
@@ -163,8 +163,8 @@ Point3f Transform::apply(const Point3f& p, const Vector3f& pe, Vector3f* absErro
   Vector3f base;
   Point3f r = apply(p, &base);
   for (int i = 0; i < 3; ++i) {
-    Float propagated = std::abs(m[i][0]) * pe.x + std::abs(m[i][1]) * pe.y +
-                       std::abs(m[i][2]) * pe.z;
+    Float propagated =
+        std::abs(m[i][0]) * pe.x + std::abs(m[i][1]) * pe.y + std::abs(m[i][2]) * pe.z;
     (*absError)[i] = base[i] + (gamma(3) + 1) * propagated;
   }
   return r;

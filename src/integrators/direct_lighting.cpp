@@ -30,16 +30,18 @@ Spectrum DirectLightingIntegrator::trace(const RayDifferential& ray, const Scene
   }
   isect.computeDifferentials(ray);
   const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
-  if (strategy_ == Strategy::All) l += uniformSampleAllLights(isect, *bsdf, scene, ctx);
-  else l += uniformSampleOneLight(isect, *bsdf, scene, ctx);
+  if (strategy_ == Strategy::All)
+    l += uniformSampleAllLights(isect, *bsdf, scene, ctx);
+  else
+    l += uniformSampleOneLight(isect, *bsdf, scene, ctx);
 
   if (depth + 1 < maxDepth_) {
     // Perfect specular reflection and transmission, followed recursively.
     for (int flags : {kReflection | kSpecular, kTransmission | kSpecular}) {
       Vector3f wi;
       Float pdf;
-      Spectrum f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf,
-                                 flags);
+      Spectrum f =
+          bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf, flags);
       Float cosTerm = absDot(wi, isect.shading.n);
       if (pdf > 0 && !f.isBlack() && cosTerm != 0) {
         Float a;

@@ -15,8 +15,8 @@ class DirectLightingIntegrator : public SurfaceIntegrator {
               Float* alpha) const override;
 
  private:
-  Spectrum trace(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
-                 int depth, Float* alpha) const;
+  Spectrum trace(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx, int depth,
+                 Float* alpha) const;
   Strategy strategy_;
   int maxDepth_;
 };

@@ -29,8 +29,8 @@ Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Li
   // BSDF sampling, for lights that a direction can hit.
   if (!light.isDelta()) {
     BxDFType sampledType;
-    Spectrum f =
-        bsdf.sampleF(it.wo, &wi, uComponent, uScattering, &scatteringPdf, nonSpecular, &sampledType);
+    Spectrum f = bsdf.sampleF(it.wo, &wi, uComponent, uScattering, &scatteringPdf, nonSpecular,
+                              &sampledType);
     f *= absDot(wi, it.shading.n);
     if (!f.isBlack() && scatteringPdf > 0) {
       lightPdf = light.pdfLi(it, wi);
@@ -51,8 +51,8 @@ Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Li
   return ld;
 }
 
-Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf,
-                                const Scene& scene, IntegratorContext& ctx) {
+Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf, const Scene& scene,
+                                IntegratorContext& ctx) {
   Spectrum l(0);
   for (const Light* light : scene.lights()) {
     int n = light->nSamples();

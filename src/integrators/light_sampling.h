@@ -13,8 +13,8 @@ Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Li
                         const Scene& scene, RayStats& stats);
 
 // Every light, each with its nSamples samples.
-Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf,
-                                const Scene& scene, IntegratorContext& ctx);
+Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf, const Scene& scene,
+                                IntegratorContext& ctx);
 
 // One light chosen uniformly, its estimate divided by the choice probability.
 Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, const Scene& scene,

@@ -19,9 +19,7 @@ class DiffuseAreaLight : public AreaLight {
   Float pdfLi(const Interaction& ref, const Vector3f& wi) const override {
     return shape_->pdf(ref, wi);
   }
-  Spectrum power() const override {
-    return lEmit_ * ((twoSided_ ? 2 : 1) * shape_->area() * kPi);
-  }
+  Spectrum power() const override { return lEmit_ * ((twoSided_ ? 2 : 1) * shape_->area() * kPi); }
   bool isDelta() const override { return false; }
 
  private:

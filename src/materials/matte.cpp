@@ -9,8 +9,10 @@ const BSDF* MatteMaterial::getBSDF(const SurfaceInteraction& si, MemoryArena& ar
   Spectrum r = clampSpectrum(kd_->evaluate(si), 0, kInfinity);
   Float sigma = clamp(sigma_->evaluate(si), 0, 90);
   if (r.isBlack()) return bsdf;
-  if (sigma == 0) bsdf->add(arena.make<LambertianReflection>(r));
-  else bsdf->add(arena.make<OrenNayar>(r, sigma));
+  if (sigma == 0)
+    bsdf->add(arena.make<LambertianReflection>(r));
+  else
+    bsdf->add(arena.make<OrenNayar>(r, sigma));
   return bsdf;
 }
 

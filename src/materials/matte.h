@@ -8,7 +8,8 @@ namespace candela {
 
 class MatteMaterial : public Material {
  public:
-  MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* sigma) : kd_(kd), sigma_(sigma) {}
+  MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* sigma)
+      : kd_(kd), sigma_(sigma) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
 
  private:

@@ -2,8 +2,7 @@
 
 namespace candela {
 
-BSDF::BSDF(const SurfaceInteraction& si, Float eta_)
-    : eta(eta_), ns_(si.shading.n), ng_(si.n) {
+BSDF::BSDF(const SurfaceInteraction& si, Float eta_) : eta(eta_), ns_(si.shading.n), ng_(si.n) {
   // Gram-Schmidt dpdu against the shading normal; fall back to any frame when degenerate.
   Vector3f s = si.shading.dpdu - ns_ * dot(ns_, si.shading.dpdu);
   if (s.lengthSquared() > 1e-20f && std::isfinite(s.lengthSquared())) {
@@ -35,8 +34,8 @@ Spectrum BSDF::f(const Vector3f& woW, const Vector3f& wiW, int flags) const {
   return f;
 }
 
-Spectrum BSDF::sampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point2f& u2,
-                       Float* pdf, int flags, BxDFType* sampledType) const {
+Spectrum BSDF::sampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point2f& u2, Float* pdf,
+                       int flags, BxDFType* sampledType) const {
   int matching = numComponents(flags);
   *pdf = 0;
   if (sampledType) *sampledType = BxDFType(0);

@@ -20,7 +20,8 @@ class BSDF {
     return Vector3f(dot(v, ss_), dot(v, ts_), dot(v, ns_));
   }
   Vector3f localToWorld(const Vector3f& v) const {
-    return Vector3f(ss_.x * v.x + ts_.x * v.y + ns_.x * v.z, ss_.y * v.x + ts_.y * v.y + ns_.y * v.z,
+    return Vector3f(ss_.x * v.x + ts_.x * v.y + ns_.x * v.z,
+                    ss_.y * v.x + ts_.y * v.y + ns_.y * v.z,
                     ss_.z * v.x + ts_.z * v.y + ns_.z * v.z);
   }
   Spectrum f(const Vector3f& woW, const Vector3f& wiW, int flags = kAllBxDF) const;

@@ -3,12 +3,11 @@
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
-#include <xmmintrin.h>
-#include <pmmintrin.h>
 
 #include <atomic>
 #include <chrono>
 
+#include "accel/embree/embree_device.h"
 #include "core/progress.h"
 
 namespace candela {
@@ -37,9 +36,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   tbb::enumerable_thread_specific<TileCounters> counters;
 
   auto renderTile = [&](int tileIndex) {
-    // Denormals are rare in rendering and slow on x86; Embree also asks for FTZ/DAZ.
-    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
-    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    enableFlushToZero();  // Embree asks for FTZ/DAZ on every tracing thread
     TileCounters& c = counters.local();
     std::unique_ptr<Sampler> sampler = sampler_.clone();
     MemoryArena arena;
@@ -74,9 +71,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
 
   int threads = options.nThreads > 0 ? options.nThreads : tbb::info::default_concurrency();
   tbb::task_arena taskArena(threads);
-  taskArena.execute([&] {
-    tbb::parallel_for(0, nx * ny, [&](int i) { renderTile(i); });
-  });
+  taskArena.execute([&] { tbb::parallel_for(0, nx * ny, [&](int i) { renderTile(i); }); });
   progress.done();
 
   RenderResult result;
@@ -85,8 +80,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     result.samples += c.samples;
     result.nonFiniteSamples += c.nonFinite;
   }
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -44,7 +44,7 @@ class ParserTarget {
   virtual void integrator(const std::string& name, ParamSet params, const FileLoc& loc) = 0;  // v3
   virtual void renderer(const std::string& name, ParamSet params, const FileLoc& loc) = 0;
   virtual void toneMap(const std::string& name, ParamSet params, const FileLoc& loc) = 0;  // lrt
-  virtual void searchPath(const std::string& path, const FileLoc& loc) = 0;                 // lrt
+  virtual void searchPath(const std::string& path, const FileLoc& loc) = 0;                // lrt
   virtual void makeNamedMedium(const std::string& name, ParamSet params, const FileLoc& loc) = 0;
   virtual void mediumInterface(const std::string& inside, const std::string& outside,
                                const FileLoc& loc) = 0;

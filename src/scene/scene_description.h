@@ -86,7 +86,7 @@ struct SceneDescription {
   std::vector<std::string> searchPath;
 
   // World block.
-  std::vector<MaterialDesc> materials;  // every Material / MakeNamedMaterial statement
+  std::vector<MaterialDesc> materials;        // every Material / MakeNamedMaterial statement
   std::map<std::string, int> namedMaterials;  // name -> index into materials
   std::vector<TextureDesc> textures;          // in statement order; later ones shadow earlier
   std::vector<ShapeDesc> shapes;

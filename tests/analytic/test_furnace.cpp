@@ -16,8 +16,8 @@ std::string furnaceScene(const std::string& integrator, const std::string& world
          "Camera \"perspective\" \"float fov\" [60]\n"
          "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16]\n"
          "Sampler \"random\" \"integer pixelsamples\" [" +
-         std::to_string(spp) + "]\n" + "SurfaceIntegrator " + integrator +
-         "\nWorldBegin\n" + world + "\nWorldEnd\n";
+         std::to_string(spp) + "]\n" + "SurfaceIntegrator " + integrator + "\nWorldBegin\n" +
+         world + "\nWorldEnd\n";
 }
 
 // Worst relative deviation of any pixel's channel from the expected value; alpha must be 1.
@@ -74,8 +74,7 @@ TEST(Furnace, DirectLightingPointLightAtCentre) {
 
 TEST(Furnace, DirectLightingOfEmittingSphereIsOneBounce) {
   // Emission seen directly plus one reflection of the uniformly lit interior: 0.5 + 0.5 * 0.5.
-  auto r = test::renderSceneText(
-      furnaceScene("\"directlighting\"", kEmissiveSphere, 64));
+  auto r = test::renderSceneText(furnaceScene("\"directlighting\"", kEmissiveSphere, 64));
   EXPECT_LT(worstRelativeError(r.film(), 0.75), 0.01);
 }
 

@@ -21,15 +21,20 @@ double energy(const Film& film, int x0, int x1, int y0, int y1) {
 std::string sceneWithSphereAt(const std::string& translate, int xres, int yres,
                               const std::string& fov = "60") {
   return "LookAt 0 0 -10  0 0 0  0 1 0\n"
-         "Camera \"perspective\" \"float fov\" [" + fov + "]\n"
-         "Film \"image\" \"integer xresolution\" [" + std::to_string(xres) +
-         "] \"integer yresolution\" [" + std::to_string(yres) + "]\n"
+         "Camera \"perspective\" \"float fov\" [" +
+         fov +
+         "]\n"
+         "Film \"image\" \"integer xresolution\" [" +
+         std::to_string(xres) + "] \"integer yresolution\" [" + std::to_string(yres) +
+         "]\n"
          "Sampler \"stratified\" \"integer xsamples\" [2] \"integer ysamples\" [2]\n"
          "SurfaceIntegrator \"directlighting\"\n"
          "WorldBegin\n"
          "LightSource \"point\" \"point from\" [0 0 -10] \"rgb I\" [100 100 100]\n"
          "Material \"matte\" \"rgb Kd\" [1 1 1]\n"
-         "AttributeBegin\n Translate " + translate + "\n Shape \"sphere\" \"float radius\" [1]\n"
+         "AttributeBegin\n Translate " +
+         translate +
+         "\n Shape \"sphere\" \"float radius\" [1]\n"
          "AttributeEnd\nWorldEnd\n";
 }
 

@@ -264,18 +264,25 @@ TEST(ExrOutput, FailedRenameLeavesNoTemporaryFile) {
 }
 
 TEST(ExrOutput, UnwritableDirectoryFailsAtomically) {
-  if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
   TempDir dir;
   fs::create_directories(dir.path("ro"));
-  fs::permissions(dir.path("ro"), fs::perms::owner_read | fs::perms::owner_exec);
   std::string path = dir.path("ro/out.exr");
+  if (::geteuid() == 0) {
+    // Root ignores permission bits; a parent that is a regular file fails for anyone.
+    std::ofstream(dir.path("plainfile")) << "x";
+    path = dir.path("plainfile/out.exr");
+  } else {
+    fs::permissions(dir.path("ro"), fs::perms::owner_read | fs::perms::owner_exec);
+  }
   try {
     writeExr(path, testImage(2, 2, {"R", "G", "B"}), {});
     ADD_FAILURE() << "no FileError";
-  } catch (const FileError&) {
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
   fs::permissions(dir.path("ro"), fs::perms::owner_all);
   EXPECT_TRUE(fs::is_empty(dir.path("ro")));
+  EXPECT_FALSE(fs::exists(path));
 }
 
 TEST(ExrOutput, InconsistentBufferFails) {

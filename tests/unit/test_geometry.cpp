@@ -23,8 +23,8 @@ TEST(Vector, DotCrossAndLength) {
 TEST(Vector, CoordinateSystemIsOrthonormal) {
   RNG rng(3);
   for (int i = 0; i < 1000; ++i) {
-    Vector3f v = normalize(Vector3f(rng.uniformFloat() - 0.5f, rng.uniformFloat() - 0.5f,
-                                    rng.uniformFloat() - 0.5f));
+    Vector3f v = normalize(
+        Vector3f(rng.uniformFloat() - 0.5f, rng.uniformFloat() - 0.5f, rng.uniformFloat() - 0.5f));
     Vector3f s, t;
     coordinateSystem(v, &s, &t);
     EXPECT_NEAR(s.length(), 1, 1e-5);
@@ -96,7 +96,8 @@ TEST(Rng, PermutationElementIsAPermutation) {
   }
   // Different seeds give different permutations.
   int same = 0;
-  for (uint32_t i = 0; i < 64; ++i) same += permutationElement(i, 64, 1) == permutationElement(i, 64, 2);
+  for (uint32_t i = 0; i < 64; ++i)
+    same += permutationElement(i, 64, 1) == permutationElement(i, 64, 2);
   EXPECT_LT(same, 16);
 }
 

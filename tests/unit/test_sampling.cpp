@@ -74,15 +74,17 @@ void chiSquareDirections(const std::function<Vector3f(Point2f)>& sample,
 }
 
 TEST(Sampling, DirectionSamplersMatchTheirPdfs) {
-  chiSquareDirections(sampleUniformSphere, [](const Vector3f&) { return uniformSpherePdf(); },
-                      "uniform sphere");
-  chiSquareDirections(sampleUniformHemisphere,
-                      [](const Vector3f& w) { return w.z > 0 ? uniformHemispherePdf() : 0; },
-                      "uniform hemisphere");
-  chiSquareDirections(sampleCosineHemisphere,
-                      [](const Vector3f& w) { return w.z > 0 ? cosineHemispherePdf(w.z) : 0; },
-                      "cosine hemisphere");
-  Float cosMax = 0.75f;  // on a cell boundary: the midpoint quadrature assumes pdfs smooth within cells
+  chiSquareDirections(
+      sampleUniformSphere, [](const Vector3f&) { return uniformSpherePdf(); }, "uniform sphere");
+  chiSquareDirections(
+      sampleUniformHemisphere,
+      [](const Vector3f& w) { return w.z > 0 ? uniformHemispherePdf() : 0; }, "uniform hemisphere");
+  chiSquareDirections(
+      sampleCosineHemisphere,
+      [](const Vector3f& w) { return w.z > 0 ? cosineHemispherePdf(w.z) : 0; },
+      "cosine hemisphere");
+  Float cosMax =
+      0.75f;  // on a cell boundary: the midpoint quadrature assumes pdfs smooth within cells
   chiSquareDirections([&](Point2f u) { return sampleUniformCone(u, cosMax); },
                       [&](const Vector3f& w) { return w.z >= cosMax ? uniformConePdf(cosMax) : 0; },
                       "uniform cone");

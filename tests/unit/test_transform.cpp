@@ -71,8 +71,8 @@ TEST(Transform, LookAtMapsTheViewDirectionToPlusZ) {
 
 TEST(Transform, ErrorBoundsContainTheExactResult) {
   RNG rng(9);
-  Transform t = translate(Vector3f(1e3f, -2e2f, 5)) * rotate(17, Vector3f(1, 2, 3)) *
-                scale(3, 0.1f, 7);
+  Transform t =
+      translate(Vector3f(1e3f, -2e2f, 5)) * rotate(17, Vector3f(1, 2, 3)) * scale(3, 0.1f, 7);
   for (int i = 0; i < 10000; ++i) {
     Point3f p((rng.uniformFloat() - 0.5f) * 2e3f, (rng.uniformFloat() - 0.5f) * 10,
               rng.uniformFloat() * 1e4f);
