@@ -28,7 +28,8 @@ fs::path framePath(fs::path p, int frameIndex) {
   if (frameIndex == 0) return p;
   fs::path ext = p.extension();
   p.replace_extension();
-  p += "-" + std::to_string(frameIndex);
+  p += "-";
+  p += std::to_string(frameIndex);
   p += ext;
   return p;
 }
