@@ -46,6 +46,9 @@ std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& 
     int xs = positiveCount(params, "xsamples", 2, loc);
     int ys = positiveCount(params, "ysamples", 2, loc);
     bool jitter = jitterParam(params);
+    // "pixelsamples" (the other samplers' count) is accepted when no strata are given.
+    if (params.find("pixelsamples") && !params.find("xsamples") && !params.find("ysamples"))
+      factorSamples(positiveCount(params, "pixelsamples", 4, loc), &xs, &ys);
     if (sppOverride > 0) factorSamples(sppOverride, &xs, &ys);
     if (int64_t(xs) * int64_t(ys) > (int64_t(1) << 30))
       throw SceneError(loc, "stratified sampler: xsamples * ysamples is too large");

@@ -231,6 +231,10 @@ TEST(SamplerFactory, DefaultsAndParameters) {
   ParamSet rp;
   rp.add(intItem("pixelsamples", 9));
   EXPECT_EQ(createSampler("random", rp, 1, 0, loc)->samplesPerPixel(), 9);
+  // The stratified sampler takes a pixelsamples count as strata when xsamples/ysamples are absent.
+  auto fromCount = createSampler("stratified", rp, 1, 0, loc);
+  EXPECT_EQ(dynamic_cast<StratifiedSampler&>(*fromCount).xSamples(), 3);
+  EXPECT_EQ(fromCount->samplesPerPixel(), 9);
 }
 
 TEST(SamplerFactory, SppOverride) {
