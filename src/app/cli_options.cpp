@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "accel/aggregate_factory.h"
+
 namespace candela {
 
 std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
@@ -24,6 +26,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   app.add_option("--cropwindow", crop, "Render only x0 x1 y0 y1 of the image (NDC, 0..1)")
       ->expected(4);
   app.add_flag("--quick", o->quick, "Quarter resolution, an eighth of the samples");
+  app.add_option("--accel", o->accelerator,
+                 "Aggregate, overriding the scene's Accelerator (default: embree)")
+      ->check(CLI::IsMember(acceleratorNames()));
   app.add_flag("-q,--quiet", o->quiet, "No progress or statistics output");
   app.add_flag("-v,--verbose", o->verbose, "More detail");
   app.add_flag("--stats", o->stats, "Print what the scene built (geometry, Embree, lights...)");
@@ -34,6 +39,18 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   app.add_option("--ocio", o->ocioConfig, "OpenColorIO config (default: $OCIO, then candela's)");
   app.add_option("--display", o->display, "OCIO display for the preview");
   app.add_option("--view", o->view, "OCIO view for the preview");
+  app.add_option("--reference", o->reference,
+                 "Reference EXR: report the error against it after each pass")
+      ->check(CLI::ExistingFile);
+  app.add_option("--error-log", o->errorLog,
+                 "Append seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95 after each pass "
+                 "(passes of 1, 2, 4, ... spp)");
+  app.add_option("--time-budget", o->timeBudget, "Stop before a pass would end past this (s)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--target-error", o->targetError,
+                 "Stop once relMSE is below this (estimated from the image's own variance "
+                 "without --reference)")
+      ->check(CLI::PositiveNumber);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -20,9 +20,18 @@ struct CliOptions {
   uint64_t seed = 0;
   std::optional<Bounds2f> cropWindow;
   bool quick = false, quiet = false, verbose = false, stats = false;
+  std::string accelerator;  // overrides the scene's Accelerator; "" = the scene's (embree)
   bool half = false;
   std::string compression = "zip";
   std::string ocioConfig, display = "sRGB", view = "Standard";
+  // Error against run time: render in doubling passes, measure after each.
+  std::string reference;   // EXR to compare with
+  std::string errorLog;    // CSV: seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95
+  double timeBudget = 0;   // seconds; 0 = none
+  double targetError = 0;  // relMSE; 0 = none
+  bool progressive() const {
+    return !reference.empty() || !errorLog.empty() || timeBudget > 0 || targetError > 0;
+  }
 };
 
 // Parses argv; on --help or a usage error prints and returns the exit code to use (0 or 2).

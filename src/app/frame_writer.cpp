@@ -36,7 +36,8 @@ fs::path framePath(fs::path p, int frameIndex) {
 }  // namespace
 
 void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
-                        const RenderResult& result, int frameIndex) const {
+                        const RenderResult& result, int frameIndex,
+                        const ImageMetadata& extra) const {
   fs::path exrPath = cli_.outfile.empty() ? fs::path(film.filename()) : fs::path(cli_.outfile);
   if (exrPath.extension() != ".exr") {
     fs::path original = exrPath;
@@ -61,6 +62,9 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   char date[32];
   std::strftime(date, sizeof date, "%Y:%m:%d %H:%M:%S", std::localtime(&now));
   meta.strings.push_back({"DateTime", date});
+  meta.strings.insert(meta.strings.end(), extra.strings.begin(), extra.strings.end());
+  meta.floats.insert(meta.floats.end(), extra.floats.begin(), extra.floats.end());
+  meta.ints.insert(meta.ints.end(), extra.ints.begin(), extra.ints.end());
 
   ExrOptions exr;
   exr.half = cli_.half;

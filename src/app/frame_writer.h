@@ -17,8 +17,9 @@ class FrameWriter {
   // Loads the OCIO config up front, so a bad config fails before any rendering.
   explicit FrameWriter(const CliOptions& cli);
   ~FrameWriter();
+  // extra: metadata of the caller's to add (stop conditions, error).
   void write(const Film& film, const SceneDescription& desc, int spp, const RenderResult& result,
-             int frameIndex) const;
+             int frameIndex, const ImageMetadata& extra = {}) const;
 
  private:
   const CliOptions& cli_;

@@ -6,7 +6,11 @@
 
 #include "accel/embree/embree_device.h"
 #include "app/cli_options.h"
+#include "app/error_log.h"
 #include "app/frame_writer.h"
+#include "film/error_metrics.h"
+#include "film/output/image_output.h"
+#include "renderers/progressive_render.h"
 #include "renderers/sampler_renderer.h"
 #include "scene/parser.h"
 #include "scene/render_job.h"
@@ -20,6 +24,45 @@ void printWarning(const FileLoc& loc, const std::string& message) {
   std::fprintf(stderr, "%s: warning: %s\n", loc.str().c_str(), message.c_str());
 }
 
+// Doubling passes with the error after each (against --reference, or estimated from the image's
+// own variance), the stop conditions, and what the EXR metadata should say about them.
+ProgressiveResult renderProgressively(const SamplerRenderer& renderer, RenderJob& job,
+                                      const CliOptions& cli, const RenderOptions& options,
+                                      ImageMetadata* metadata) {
+  std::optional<ImageBuffer> reference;
+  if (!cli.reference.empty()) reference = readImage(cli.reference);
+  std::unique_ptr<ErrorLog> log;
+  if (!cli.errorLog.empty()) log = std::make_unique<ErrorLog>(cli.errorLog);
+  ErrorMetrics last;
+  ProgressiveOptions po;
+  po.render = options;
+  po.timeBudget = cli.timeBudget;
+  po.afterPass = [&](const PassReport& pass) {
+    try {
+      last =
+          reference ? compareToReference(*job.film, *reference) : estimateFromVariance(*job.film);
+    } catch (const std::invalid_argument& e) {
+      throw FileError(cli.reference, e.what());
+    }
+    if (log) log->append(pass, last);
+    if (!cli.quiet)
+      std::fprintf(stderr, "  relMSE %.4g (95%% CI +-%.2g)%s\n", last.relmse, last.relmseCi95,
+                   reference ? "" : " estimated from variance");
+    return !(cli.targetError > 0 && last.relmse <= cli.targetError);
+  };
+  ProgressiveResult pr =
+      renderProgressive(renderer, *job.scene, *job.film, job.sampler->samplesPerPixel(), po);
+  metadata->strings.push_back({"candela:stopReason", stopReasonName(pr.reason)});
+  metadata->ints.push_back({"candela:passes", pr.passes});
+  if (cli.timeBudget > 0) metadata->floats.push_back({"candela:timeBudget", float(cli.timeBudget)});
+  if (cli.targetError > 0)
+    metadata->floats.push_back({"candela:targetError", float(cli.targetError)});
+  metadata->floats.push_back({"candela:relmse", float(last.relmse)});
+  metadata->strings.push_back(
+      {"candela:relmseSource", reference ? "reference " + cli.reference : "variance estimate"});
+  return pr;
+}
+
 void renderFrame(const SceneDescription& desc, const CliOptions& cli, const EmbreeDevice& device,
                  const FrameWriter& writer, int frameIndex) {
   BuildOptions build;
@@ -27,6 +70,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.sppOverride = cli.spp;
   build.cropWindow = cli.cropWindow;
   build.quick = cli.quick;
+  build.accelerator = cli.accelerator;
   if (!cli.quiet) build.warn = printWarning;
   RenderJob job = buildRenderJob(desc, build, device);
   if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
@@ -36,7 +80,16 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   options.tileSize = cli.tileSize;
   options.quiet = cli.quiet;
   SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
-  RenderResult result = renderer.render(*job.scene, *job.film, options);
+  RenderResult result;
+  int spp = job.sampler->samplesPerPixel();
+  ImageMetadata extra;
+  if (cli.progressive()) {
+    ProgressiveResult pr = renderProgressively(renderer, job, cli, options, &extra);
+    result = pr.total;
+    spp = pr.spp;
+  } else {
+    result = renderer.render(*job.scene, *job.film, options);
+  }
   if (!cli.quiet) {
     uint64_t rays = result.rays.intersectionRays + result.rays.shadowRays;
     std::fprintf(stderr,
@@ -51,7 +104,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
       std::fprintf(stderr, "warning: %llu samples had NaN or infinite radiance and were dropped\n",
                    (unsigned long long)result.nonFiniteSamples);
   }
-  writer.write(*job.film, desc, job.sampler->samplesPerPixel(), result, frameIndex);
+  writer.write(*job.film, desc, spp, result, frameIndex, extra);
 }
 
 }  // namespace

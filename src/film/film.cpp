@@ -45,6 +45,34 @@ void Film::addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float
   for (int c = 0; c < 3; ++c) px.rgbSum[c] += double(weight) * double(L[c]);
   px.alphaSum += double(weight) * double(alpha);
   px.weightSum += double(weight);
+  double w2 = double(weight) * double(weight);
+  for (int c = 0; c < 3; ++c) {
+    px.w2LSum[c] += w2 * double(L[c]);
+    px.w2L2Sum[c] += w2 * double(L[c]) * double(L[c]);
+  }
+  px.w2Sum += w2;
+  ++px.count;
+}
+
+Spectrum Film::pixelVariance(const Point2i& pixel) const {
+  if (!pixelBounds_.inside(pixel)) return Spectrum(0);
+  const Pixel& px = at(pixel);
+  if (px.count < 2 || px.weightSum == 0) return Spectrum(0);
+  // The mean m = sum(w L) / sum(w) has variance ~ sum(w^2 (L - m)^2) / (sum w)^2 for independent
+  // samples; expanded so one pass over the samples suffices. The n/(n-1) factor makes it unbiased
+  // for equal weights.
+  Spectrum v;
+  double n = double(px.count);
+  for (int c = 0; c < 3; ++c) {
+    double m = px.rgbSum[c] / px.weightSum;
+    double s = px.w2L2Sum[c] - 2 * m * px.w2LSum[c] + m * m * px.w2Sum;
+    v[c] = Float(std::max(0.0, s) / (px.weightSum * px.weightSum) * n / (n - 1));
+  }
+  return v;
+}
+
+long Film::pixelSampleCount(const Point2i& pixel) const {
+  return pixelBounds_.inside(pixel) ? at(pixel).count : 0;
 }
 
 Spectrum Film::pixelValue(const Point2i& pixel) const {

@@ -32,6 +32,10 @@ class Film {
   // Weighted mean radiance of a pixel (black if it has no samples).
   Spectrum pixelValue(const Point2i& pixel) const;
   Float pixelAlpha(const Point2i& pixel) const;
+  // Estimated variance of pixelValue (the variance of the weighted mean, from the samples' spread),
+  // per channel; 0 with fewer than two samples.
+  Spectrum pixelVariance(const Point2i& pixel) const;
+  long pixelSampleCount(const Point2i& pixel) const;
   // R, G, B, A of the pixel bounds, top row first.
   ImageBuffer image() const;
 
@@ -40,6 +44,11 @@ class Film {
     double rgbSum[3] = {0, 0, 0};
     double alphaSum = 0;
     double weightSum = 0;
+    // For the variance of the weighted mean: sums of w^2 L^2, w^2 L and w^2.
+    double w2L2Sum[3] = {0, 0, 0};
+    double w2LSum[3] = {0, 0, 0};
+    double w2Sum = 0;
+    long count = 0;
   };
   size_t offset(const Point2i& p) const;  // p must be inside pixelBounds_
   Pixel& at(const Point2i& p) { return pixels_[offset(p)]; }

@@ -28,6 +28,8 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   const int nx = (bounds.pMax.x - bounds.pMin.x + tile - 1) / tile;
   const int ny = (bounds.pMax.y - bounds.pMin.y + tile - 1) / tile;
   const int spp = sampler_.samplesPerPixel();
+  const int s0 = std::max(0, options.firstSample);
+  const int s1 = options.endSample < 0 ? spp : std::min(options.endSample, spp);
   // Offset rays one pixel over are too far apart when a pixel gets many samples (pbrt 3e §1.4.3).
   const Float differentialScale = 1 / std::sqrt(Float(std::max(1, spp)));
 
@@ -47,7 +49,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         Point2i pixel(x, y);
-        for (int s = 0; s < spp; ++s) {
+        for (int s = s0; s < s1; ++s) {
           sampler->startPixelSample(pixel, s);
           CameraSample cs = getCameraSample(*sampler, pixel, film.filter());
           RayDifferential ray;

@@ -15,6 +15,11 @@ struct RenderOptions {
   int nThreads = 0;    // 0: all cores
   int tileSize = 16;   // pixels per tile side
   bool quiet = false;  // no progress output
+  // The range of sample indices to take in each pixel: [firstSample, endSample), endSample < 0
+  // meaning the sampler's samples per pixel. Rendering [0, a) then [a, b) into one film adds
+  // every pixel's samples in the same order as rendering [0, b): the same bits.
+  int firstSample = 0;
+  int endSample = -1;
 };
 
 struct RenderResult {

@@ -1,0 +1,36 @@
+// Image error against a reference, and the error a render can estimate from its own per-pixel
+// variance when there is no reference. Channels R, G, B over the film's pixel bounds.
+#pragma once
+
+#include "film/film.h"
+#include "film/image_buffer.h"
+
+namespace candela {
+
+// relMSE's denominator offset: (x - ref)^2 / (ref^2 + kRelMseEpsilon).
+inline constexpr double kRelMseEpsilon = 1e-2;
+
+struct ErrorMetrics {
+  double mse = 0;
+  double relmse = 0;
+  double rmse = 0;
+  double maxAbsError = 0;
+  // Half-width of a 95% confidence interval of relMSE from the per-pixel variances: for an
+  // unbiased estimator each pixel's squared error has mean var and variance ~2 var^2 (normal
+  // errors), summed over the pixels.
+  double relmseCi95 = 0;
+  // The relMSE the per-pixel variances predict: mean of var / (ref^2 + eps).
+  double relmseFromVariance = 0;
+};
+
+// Against a reference image: a full-frame reference (fullWidth x fullHeight of the film) or one
+// that covers exactly the film's pixel bounds. Throws std::invalid_argument when its size fits
+// neither or it lacks R, G, B.
+ErrorMetrics compareToReference(const Film& film, const ImageBuffer& reference);
+
+// Without a reference: relMSE predicted from the variances, with the image itself standing in for
+// the reference in the denominators. mse/rmse are the mean variance; maxAbsError is 0. Infinite
+// while any pixel has fewer than two samples.
+ErrorMetrics estimateFromVariance(const Film& film);
+
+}  // namespace candela
