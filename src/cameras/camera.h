@@ -21,9 +21,9 @@ class Camera {
   virtual Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const;
 };
 
-// The camera named by a Camera statement ("perspective"), with pbrt-v2's parameters and
-// defaults; cameraToWorld is the inverse of the CTM at the statement, fullResolution the film's.
-// An unknown name or a bad value is a SceneError at loc.
+// The camera named by a Camera statement ("perspective", "orthographic" or "environment"), with
+// pbrt-v2's parameters and defaults; cameraToWorld is the inverse of the CTM at the statement,
+// fullResolution the film's. An unknown name or a bad value is a SceneError at loc.
 std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
                                      const Transform& cameraToWorld, const Point2i& fullResolution,
                                      const FileLoc& loc);

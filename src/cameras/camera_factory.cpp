@@ -2,6 +2,8 @@
 #include <cmath>
 
 #include "cameras/camera.h"
+#include "cameras/environment_camera.h"
+#include "cameras/orthographic_camera.h"
 #include "cameras/perspective_camera.h"
 
 namespace candela {
@@ -10,9 +12,25 @@ namespace {
 
 std::string str(Float v) { return std::to_string(v); }
 
-PerspectiveCameraOptions perspectiveOptions(const ParamSet& params, const Point2i& resolution,
-                                            const FileLoc& loc) {
-  PerspectiveCameraOptions o;
+// The shutter interval and the clipping distances, common to every camera.
+void readShutterAndClipping(const ParamSet& params, const FileLoc& loc, Float* shutterOpen,
+                            Float* shutterClose, Float* hither, Float* yon) {
+  *shutterOpen = params.getOneFloat("shutteropen", 0);
+  *shutterClose = params.getOneFloat("shutterclose", 1);
+  // pbrt-v2 swaps a reversed shutter interval rather than rejecting it.
+  if (*shutterClose < *shutterOpen) std::swap(*shutterOpen, *shutterClose);
+
+  *hither = params.getOneFloat("hither", 1e-3f);
+  *yon = params.getOneFloat("yon", 1e30f);
+  if (!(*hither >= 0) || !(*yon > *hither))
+    throw SceneError(params.locationOf("hither", loc),
+                     "clipping planes need 0 <= hither < yon, got hither " + str(*hither) +
+                         ", yon " + str(*yon));
+}
+
+ProjectiveCameraOptions projectiveOptions(const ParamSet& params, const Point2i& resolution,
+                                          const FileLoc& loc) {
+  ProjectiveCameraOptions o;
   o.fullResolution = resolution;
   auto where = [&](const char* name) { return params.locationOf(name, loc); };
 
@@ -31,6 +49,22 @@ PerspectiveCameraOptions perspectiveOptions(const ParamSet& params, const Point2
     o.screenWindow = Bounds2f(Point2f(sw[0], sw[2]), Point2f(sw[1], sw[3]));
   }
 
+  o.lensRadius = params.getOneFloat("lensradius", 0);
+  if (!(o.lensRadius >= 0) || !std::isfinite(o.lensRadius))
+    throw SceneError(where("lensradius"), "\"lensradius\" must be >= 0, got " + str(o.lensRadius));
+  o.focalDistance = params.getOneFloat("focaldistance", 1e30f);
+  if (!(o.focalDistance > 0))
+    throw SceneError(where("focaldistance"),
+                     "\"focaldistance\" must be positive, got " + str(o.focalDistance));
+
+  readShutterAndClipping(params, loc, &o.shutterOpen, &o.shutterClose, &o.hither, &o.yon);
+  return o;
+}
+
+PerspectiveCameraOptions perspectiveOptions(const ParamSet& params, const Point2i& resolution,
+                                            const FileLoc& loc) {
+  PerspectiveCameraOptions o;
+  static_cast<ProjectiveCameraOptions&>(o) = projectiveOptions(params, resolution, loc);
   // pbrt-v2 also reads "halffov" (half the angle), which wins when given.
   o.fov = params.getOneFloat("fov", 90);
   const char* fovName = "fov";
@@ -40,27 +74,16 @@ PerspectiveCameraOptions perspectiveOptions(const ParamSet& params, const Point2
     fovName = "halffov";
   }
   if (!(o.fov > 0 && o.fov < 180))
-    throw SceneError(where(fovName),
+    throw SceneError(params.locationOf(fovName, loc),
                      "field of view must be between 0 and 180 degrees, got " + str(o.fov));
+  return o;
+}
 
-  o.lensRadius = params.getOneFloat("lensradius", 0);
-  if (!(o.lensRadius >= 0) || !std::isfinite(o.lensRadius))
-    throw SceneError(where("lensradius"), "\"lensradius\" must be >= 0, got " + str(o.lensRadius));
-  o.focalDistance = params.getOneFloat("focaldistance", 1e30f);
-  if (!(o.focalDistance > 0))
-    throw SceneError(where("focaldistance"),
-                     "\"focaldistance\" must be positive, got " + str(o.focalDistance));
-
-  o.shutterOpen = params.getOneFloat("shutteropen", 0);
-  o.shutterClose = params.getOneFloat("shutterclose", 1);
-  // pbrt-v2 swaps a reversed shutter interval rather than rejecting it.
-  if (o.shutterClose < o.shutterOpen) std::swap(o.shutterOpen, o.shutterClose);
-
-  o.hither = params.getOneFloat("hither", 1e-3f);
-  o.yon = params.getOneFloat("yon", 1e30f);
-  if (!(o.hither >= 0) || !(o.yon > o.hither))
-    throw SceneError(where("hither"), "clipping planes need 0 <= hither < yon, got hither " +
-                                          str(o.hither) + ", yon " + str(o.yon));
+EnvironmentCameraOptions environmentOptions(const ParamSet& params, const Point2i& resolution,
+                                            const FileLoc& loc) {
+  EnvironmentCameraOptions o;
+  o.fullResolution = resolution;
+  readShutterAndClipping(params, loc, &o.shutterOpen, &o.shutterClose, &o.hither, &o.yon);
   return o;
 }
 
@@ -74,7 +97,14 @@ std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& pa
   if (name == "perspective")
     return std::make_unique<PerspectiveCamera>(cameraToWorld,
                                                perspectiveOptions(params, fullResolution, loc));
-  throw SceneError(loc, "unknown camera \"" + name + "\" (known: perspective)");
+  if (name == "orthographic")
+    return std::make_unique<OrthographicCamera>(cameraToWorld,
+                                                projectiveOptions(params, fullResolution, loc));
+  if (name == "environment")
+    return std::make_unique<EnvironmentCamera>(cameraToWorld,
+                                               environmentOptions(params, fullResolution, loc));
+  throw SceneError(
+      loc, "unknown camera \"" + name + "\" (known: perspective, orthographic, environment)");
 }
 
 }  // namespace candela

@@ -47,8 +47,9 @@ class Filter {
   Float integral_ = 0;
 };
 
-// The filter named by a PixelFilter statement: "box", "gaussian" or "mitchell", with pbrt-v2's
-// parameter names and defaults. An unknown name or a bad value is a SceneError at loc.
+// The filter named by a PixelFilter statement: "box", "gaussian", "mitchell", "triangle" or
+// "sinc", with pbrt-v2's parameter names and defaults. An unknown name or a bad value is a
+// SceneError at loc.
 std::unique_ptr<Filter> createFilter(const std::string& name, const ParamSet& params,
                                      const FileLoc& loc);
 

@@ -1,11 +1,14 @@
 // PixelFilter "name" -> Filter, with pbrt-v2's parameter names and defaults (lrt draft App. C:
-// xwidth and ywidth are radii; pbrt-v2 defaults them to 0.5 for the box and to 2 otherwise).
+// xwidth and ywidth are radii; pbrt-v2 defaults them to 0.5 for the box, 4 for the sinc and 2
+// otherwise).
 #include <cmath>
 
 #include "filters/box_filter.h"
 #include "filters/filter.h"
 #include "filters/gaussian_filter.h"
 #include "filters/mitchell_filter.h"
+#include "filters/sinc_filter.h"
+#include "filters/triangle_filter.h"
 
 namespace candela {
 
@@ -41,7 +44,13 @@ std::unique_ptr<Filter> createFilter(const std::string& name, const ParamSet& pa
       throw SceneError(loc, "mitchell filter: \"B\" and \"C\" must be finite");
     return std::make_unique<MitchellFilter>(radius, b, c);
   }
-  throw SceneError(loc, "unknown pixel filter \"" + name + "\" (known: box, gaussian, mitchell)");
+  if (name == "triangle") return std::make_unique<TriangleFilter>(radiusParam(params, 2, loc));
+  if (name == "sinc") {
+    Vector2f radius = radiusParam(params, 4, loc);
+    return std::make_unique<LanczosSincFilter>(radius, positiveParam(params, "tau", 3, loc));
+  }
+  throw SceneError(loc, "unknown pixel filter \"" + name +
+                            "\" (known: box, gaussian, mitchell, triangle, sinc)");
 }
 
 }  // namespace candela

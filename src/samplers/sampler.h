@@ -4,10 +4,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "core/paramset.h"
+#include "core/spectrum.h"
 #include "core/vector.h"
 
 namespace candela {
@@ -21,6 +24,12 @@ struct CameraSample {
   Float filterWeight = 1;
 };
 
+// What one pixel sample gave, for adaptive sampling's decision.
+struct PixelSampleResult {
+  Spectrum L;
+  uint64_t surfaceId = 0;  // the surface the camera ray hit, as the renderer numbers them; 0: none
+};
+
 class Sampler {
  public:
   virtual ~Sampler() = default;
@@ -32,17 +41,33 @@ class Sampler {
   virtual Point2f get2D() = 0;
   // The position within the pixel (the first dimensions of each sample).
   virtual Point2f getPixel2D() = 0;
+
+  // Adaptive sampling (pbrt-v2's AdaptiveSampler): a renderer that supports it takes samples
+  // [0, initialSamplesPerPixel()) of a pixel first, and the rest up to samplesPerPixel() only
+  // when needsMoreSamples says so for what the first ones gave. The decision depends on the
+  // pixel's own samples only, so the image stays independent of the rendering order. Other
+  // samplers take every sample: these defaults.
+  virtual int initialSamplesPerPixel() const { return samplesPerPixel(); }
+  virtual bool needsMoreSamples(std::span<const PixelSampleResult> /*initial*/) const {
+    return false;
+  }
 };
+
+using SamplerWarning = std::function<void(const FileLoc&, const std::string&)>;
 
 // The camera sample for one pixel sample (pbrt 4e §5.2.2): the film position is the pixel centre
 // plus an offset drawn from the filter, whose weight goes with it to the film; then time, then
 // the lens position, in that order of dimensions.
 CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filter& filter);
 
-// The sampler named by a Sampler statement: "random" or "stratified". sppOverride > 0 replaces
-// the scene's sample count (the stratified sampler picks xsamples x ysamples = sppOverride, as
-// square as it divides). Unknown names and bad counts are SceneErrors at loc.
+// The sampler named by a Sampler statement: "random", "stratified", "lowdiscrepancy", "halton",
+// "bestcandidate" or "adaptive". sppOverride > 0 replaces the scene's sample count (the stratified
+// sampler picks xsamples x ysamples = sppOverride, as square as it divides; the adaptive sampler
+// takes it as maxsamples). Counts the (0,2)-sequence samplers cannot use are rounded up to a
+// power of two with a warning, to warn or, when it is empty, to standard error. Unknown names and
+// bad counts are SceneErrors at loc.
 std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& params,
-                                       uint64_t seed, int sppOverride, const FileLoc& loc);
+                                       uint64_t seed, int sppOverride, const FileLoc& loc,
+                                       const SamplerWarning& warn = {});
 
 }  // namespace candela

@@ -1,6 +1,11 @@
 // Sampler "name" -> Sampler, with pbrt-v2's parameter names and defaults (lrt draft App. C).
 #include <cmath>
+#include <iostream>
 
+#include "samplers/adaptive_sampler.h"
+#include "samplers/best_candidate_sampler.h"
+#include "samplers/halton_sampler.h"
+#include "samplers/lowdiscrepancy_sampler.h"
 #include "samplers/random_sampler.h"
 #include "samplers/sampler.h"
 #include "samplers/stratified_sampler.h"
@@ -9,11 +14,17 @@ namespace candela {
 
 namespace {
 
+// Large enough for any practical render, small enough that counts and indices fit in 32 bits.
+constexpr int kMaxSamplesPerPixel = 1 << 24;
+
 int positiveCount(const ParamSet& params, const std::string& name, int def, const FileLoc& loc) {
   int v = params.getOneInt(name, def);
   if (v < 1)
     throw SceneError(params.locationOf(name, loc),
                      "\"" + name + "\" must be at least 1, got " + std::to_string(v));
+  if (v > kMaxSamplesPerPixel)
+    throw SceneError(params.locationOf(name, loc), "\"" + name + "\" is too large (at most " +
+                                                       std::to_string(kMaxSamplesPerPixel) + ")");
   return v;
 }
 
@@ -32,16 +43,67 @@ void factorSamples(int spp, int* xs, int* ys) {
   *xs = spp / d;
 }
 
+void warnAt(const SamplerWarning& warn, const FileLoc& loc, const std::string& message) {
+  if (warn)
+    warn(loc, message);
+  else
+    std::cerr << loc.str() << ": warning: " << message << "\n";
+}
+
+// The (0,2)-sequence's stratification needs a power of two per pixel (pbrt-v2 rounds up too).
+int powerOfTwoCount(int n, const std::string& what, const FileLoc& loc,
+                    const SamplerWarning& warn) {
+  int p = 1;
+  while (p < n) p *= 2;
+  if (p != n)
+    warnAt(warn, loc,
+           what + " " + std::to_string(n) + " rounded up to the power of two " + std::to_string(p));
+  return p;
+}
+
+int sampleCount(const ParamSet& params, int sppOverride, const FileLoc& loc) {
+  return sppOverride > 0 ? sppOverride : positiveCount(params, "pixelsamples", 4, loc);
+}
+
+std::unique_ptr<Sampler> createAdaptive(const ParamSet& params, uint64_t seed, int sppOverride,
+                                        const FileLoc& loc, const SamplerWarning& warn) {
+  int minSamples = positiveCount(params, "minsamples", 4, loc);
+  int maxSamples = sppOverride > 0 ? sppOverride : positiveCount(params, "maxsamples", 32, loc);
+  minSamples = powerOfTwoCount(minSamples, "adaptive sampler: minsamples",
+                               params.locationOf("minsamples", loc), warn);
+  maxSamples = powerOfTwoCount(maxSamples, "adaptive sampler: maxsamples",
+                               params.locationOf("maxsamples", loc), warn);
+  if (sppOverride > 0) {
+    minSamples = std::min(minSamples, maxSamples);
+  } else if (minSamples > maxSamples) {
+    throw SceneError(params.locationOf("minsamples", loc),
+                     "adaptive sampler: minsamples " + std::to_string(minSamples) +
+                         " exceeds maxsamples " + std::to_string(maxSamples));
+  }
+  std::string method = params.getOneString("method", "contrast");
+  AdaptiveMethod m;
+  if (method == "contrast")
+    m = AdaptiveMethod::Contrast;
+  else if (method == "shapeid")
+    m = AdaptiveMethod::ShapeId;
+  else
+    throw SceneError(
+        params.locationOf("method", loc),
+        "adaptive sampler: unknown method \"" + method + "\" (known: contrast, shapeid)");
+  return std::make_unique<AdaptiveSampler>(minSamples, maxSamples, m, seed);
+}
+
 }  // namespace
 
 std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& params,
-                                       uint64_t seed, int sppOverride, const FileLoc& loc) {
+                                       uint64_t seed, int sppOverride, const FileLoc& loc,
+                                       const SamplerWarning& warn) {
   if (sppOverride < 0)
     throw SceneError(loc, "samples per pixel must be positive, got " + std::to_string(sppOverride));
-  if (name == "random") {
-    int spp = positiveCount(params, "pixelsamples", 4, loc);
-    return std::make_unique<RandomSampler>(sppOverride > 0 ? sppOverride : spp, seed);
-  }
+  if (sppOverride > kMaxSamplesPerPixel)
+    throw SceneError(loc, "samples per pixel " + std::to_string(sppOverride) + " is too large");
+  if (name == "random")
+    return std::make_unique<RandomSampler>(sampleCount(params, sppOverride, loc), seed);
   if (name == "stratified") {
     int xs = positiveCount(params, "xsamples", 2, loc);
     int ys = positiveCount(params, "ysamples", 2, loc);
@@ -50,11 +112,24 @@ std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& 
     if (params.find("pixelsamples") && !params.find("xsamples") && !params.find("ysamples"))
       factorSamples(positiveCount(params, "pixelsamples", 4, loc), &xs, &ys);
     if (sppOverride > 0) factorSamples(sppOverride, &xs, &ys);
-    if (int64_t(xs) * int64_t(ys) > (int64_t(1) << 30))
+    if (int64_t(xs) * int64_t(ys) > kMaxSamplesPerPixel)
       throw SceneError(loc, "stratified sampler: xsamples * ysamples is too large");
     return std::make_unique<StratifiedSampler>(xs, ys, jitter, seed);
   }
-  throw SceneError(loc, "unknown sampler \"" + name + "\" (known: random, stratified)");
+  if (name == "lowdiscrepancy") {
+    int spp = powerOfTwoCount(sampleCount(params, sppOverride, loc),
+                              "lowdiscrepancy sampler: pixelsamples",
+                              params.locationOf("pixelsamples", loc), warn);
+    return std::make_unique<LowDiscrepancySampler>(spp, seed);
+  }
+  if (name == "halton")
+    return std::make_unique<HaltonSampler>(sampleCount(params, sppOverride, loc), seed);
+  if (name == "bestcandidate")
+    return std::make_unique<BestCandidateSampler>(sampleCount(params, sppOverride, loc), seed);
+  if (name == "adaptive") return createAdaptive(params, seed, sppOverride, loc, warn);
+  throw SceneError(loc, "unknown sampler \"" + name +
+                            "\" (known: random, stratified, lowdiscrepancy, halton, "
+                            "bestcandidate, adaptive)");
 }
 
 }  // namespace candela

@@ -229,13 +229,14 @@ TEST(PerspectiveCamera, ScreenWindowAndFrameAspectRatio) {
 
 TEST(CameraFactory, ErrorsAndHalfFov) {
   try {
-    createCamera("orthographic", ParamSet(), Transform(), {10, 10}, FileLoc{"c.pbrt", 8, 1});
+    createCamera("fisheye", ParamSet(), Transform(), {10, 10}, FileLoc{"c.pbrt", 8, 1});
     FAIL();
   } catch (const SceneError& e) {
     std::string what = e.what();
     EXPECT_NE(what.find("c.pbrt:8:1"), std::string::npos);
-    EXPECT_NE(what.find("orthographic"), std::string::npos);
-    EXPECT_NE(what.find("perspective"), std::string::npos);
+    EXPECT_NE(what.find("fisheye"), std::string::npos);
+    for (const char* known : {"perspective", "orthographic", "environment"})
+      EXPECT_NE(what.find(known), std::string::npos) << what;
   }
   ParamSet bad;
   bad.add(floatItem("fov", {180}));

@@ -14,6 +14,8 @@
 #include "filters/filter.h"
 #include "filters/gaussian_filter.h"
 #include "filters/mitchell_filter.h"
+#include "filters/sinc_filter.h"
+#include "filters/triangle_filter.h"
 #include "samplers/random_sampler.h"
 #include "samplers/sampler.h"
 
@@ -100,6 +102,10 @@ std::vector<NamedFilter> allFilters() {
   v.push_back({"gaussian narrow", std::make_unique<GaussianFilter>(Vector2f(1.5f, 1), 1.f)});
   v.push_back({"mitchell", std::make_unique<MitchellFilter>(Vector2f(2, 2), 1.f / 3, 1.f / 3)});
   v.push_back({"catmull-rom", std::make_unique<MitchellFilter>(Vector2f(2, 1.25f), 0.f, 0.5f)});
+  v.push_back({"triangle", std::make_unique<TriangleFilter>(Vector2f(2, 2))});
+  v.push_back({"triangle narrow", std::make_unique<TriangleFilter>(Vector2f(0.75f, 1.5f))});
+  v.push_back({"sinc", std::make_unique<LanczosSincFilter>(Vector2f(4, 4), 3.f)});
+  v.push_back({"sinc 2 lobes", std::make_unique<LanczosSincFilter>(Vector2f(2, 3), 2.f)});
   return v;
 }
 
@@ -130,6 +136,65 @@ TEST(Filter, MitchellIntegralIsQuarterOfWidths) {
     double exact = (c.rx / 2.0) * (c.ry / 2.0);
     EXPECT_NEAR(f.integral(), exact, 1e-4 * exact) << c.rx << " " << c.ry << " B " << c.b;
   }
+}
+
+TEST(Filter, TriangleIntegralIsSquaredWidths) {
+  // Per axis the tent max(0, r - |x|) over [-r, r] is a triangle of base 2r and height r: r^2.
+  // The table's midpoint rule is exact for it (linear on every cell, the kink on a cell edge).
+  for (Vector2f r : {Vector2f(2, 2), Vector2f(0.75f, 1.5f), Vector2f(0.5f, 3)}) {
+    TriangleFilter f(r);
+    double exact = double(r.x) * r.x * double(r.y) * r.y;
+    EXPECT_NEAR(f.integral(), exact, 1e-5 * exact) << r.x << " " << r.y;
+  }
+  TriangleFilter f(Vector2f(2, 1));
+  EXPECT_FLOAT_EQ(f.evaluate(Point2f(0, 0)), 2.f);
+  EXPECT_FLOAT_EQ(f.evaluate(Point2f(1, 0.5f)), 0.5f);
+  EXPECT_EQ(f.evaluate(Point2f(2, 0)), 0.f);
+  EXPECT_EQ(f.evaluate(Point2f(0.5f, -1)), 0.f);
+}
+
+// The 1D Lanczos-windowed sinc on [-r, r] in double precision, by composite Simpson on 20000
+// intervals (error far below 1e-9 for this smooth integrand).
+double sincIntegral1D(double r, double tau) {
+  auto f = [&](double x) {
+    double t = std::abs(x / r);
+    if (t < 1e-12) return 1.0;
+    double a = M_PI * t;
+    return std::sin(a * tau) / (a * tau) * std::sin(a) / a;
+  };
+  const int n = 20000;
+  double h = 2 * r / n, sum = f(-r) + f(r);
+  for (int i = 1; i < n; ++i) sum += f(-r + i * h) * (i % 2 ? 4 : 2);
+  return sum * h / 3;
+}
+
+TEST(Filter, SincIntegralMatchesQuadrature) {
+  struct Case {
+    Float rx, ry, tau;
+  };
+  for (Case c : {Case{4, 4, 3}, Case{2, 3, 2}, Case{1.5f, 4, 4}}) {
+    LanczosSincFilter f(Vector2f(c.rx, c.ry), c.tau);
+    double exact = sincIntegral1D(c.rx, c.tau) * sincIntegral1D(c.ry, c.tau);
+    EXPECT_NEAR(f.integral(), exact, 1e-4 * exact) << c.rx << " " << c.ry << " " << c.tau;
+  }
+}
+
+TEST(Filter, SincValues) {
+  LanczosSincFilter f(Vector2f(4, 4), 3);
+  EXPECT_EQ(f.windowedSinc(0), 1.f);
+  EXPECT_EQ(f.evaluate(Point2f(0, 0)), 1.f);
+  EXPECT_EQ(f.windowedSinc(9e-6f), 1.f);  // below 1e-5 it is taken as 1
+  // Zeros where tau x' is a nonzero integer, and at and beyond the radius.
+  for (Float x : {1.f / 3, 2.f / 3, 1.f}) EXPECT_NEAR(f.windowedSinc(x), 0, 1e-6) << x;
+  EXPECT_EQ(f.windowedSinc(1.01f), 0.f);
+  EXPECT_EQ(f.evaluate(Point2f(4.5f, 0)), 0.f);
+  // The first negative lobe, and a value in closed form: x' = 1/2 gives
+  // sin(3 pi/2)/(3 pi/2) * sin(pi/2)/(pi/2) = -4 / (3 pi^2).
+  EXPECT_LT(f.windowedSinc(0.5f), 0.f);
+  EXPECT_NEAR(f.windowedSinc(0.5f), -4 / (3 * M_PI * M_PI), 1e-6);
+  EXPECT_NEAR(f.evaluate(Point2f(2, -2)), 16 / (9 * M_PI * M_PI * M_PI * M_PI), 1e-6);
+  // Even in x and y.
+  EXPECT_EQ(f.evaluate(Point2f(-1.3f, 0.7f)), f.evaluate(Point2f(1.3f, -0.7f)));
 }
 
 TEST(Filter, ZeroAtTheEdgeAndOneAtCentreWhereDefined) {
@@ -264,6 +329,29 @@ TEST(FilterFactory, DefaultsFollowPbrtV2) {
   EXPECT_FLOAT_EQ(m->c(), 1.f / 3);
 }
 
+TEST(FilterFactory, TriangleAndSincDefaults) {
+  FileLoc loc{"scene.pbrt", 1, 1};
+  auto tri = createFilter("triangle", ParamSet(), loc);
+  ASSERT_NE(dynamic_cast<TriangleFilter*>(tri.get()), nullptr);
+  EXPECT_EQ(tri->radius().x, 2.f);
+  EXPECT_EQ(tri->radius().y, 2.f);
+  auto sinc = createFilter("sinc", ParamSet(), loc);
+  auto* s = dynamic_cast<LanczosSincFilter*>(sinc.get());
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(sinc->radius().x, 4.f);
+  EXPECT_EQ(sinc->radius().y, 4.f);
+  EXPECT_EQ(s->tau(), 3.f);
+  ParamSet ps;
+  ps.add(floatItem("tau", {2}));
+  ps.add(floatItem("ywidth", {1.5f}));
+  sinc = createFilter("sinc", ps, loc);
+  EXPECT_EQ(dynamic_cast<LanczosSincFilter&>(*sinc).tau(), 2.f);
+  EXPECT_EQ(sinc->radius().y, 1.5f);
+  ParamSet bad;
+  bad.add(floatItem("tau", {0}));
+  EXPECT_THROW(createFilter("sinc", bad, loc), SceneError);
+}
+
 TEST(FilterFactory, ReadsParameters) {
   ParamSet ps;
   ps.add(floatItem("xwidth", {1.25f}));
@@ -287,7 +375,7 @@ TEST(FilterFactory, UnknownNameListsKnownFilters) {
     std::string what = e.what();
     EXPECT_NE(what.find("a.pbrt:4:2"), std::string::npos) << what;
     EXPECT_NE(what.find("lanczos"), std::string::npos) << what;
-    for (const char* known : {"box", "gaussian", "mitchell"})
+    for (const char* known : {"box", "gaussian", "mitchell", "triangle", "sinc"})
       EXPECT_NE(what.find(known), std::string::npos) << what;
   }
 }

@@ -1,0 +1,102 @@
+#include "cameras/projective_camera.h"
+
+#include "core/sampling.h"
+
+namespace candela {
+
+Bounds2f defaultScreenWindow(Float frameAspectRatio) {
+  if (frameAspectRatio > 1)
+    return Bounds2f(Point2f(-frameAspectRatio, -1), Point2f(frameAspectRatio, 1));
+  return Bounds2f(Point2f(-1, -1 / frameAspectRatio), Point2f(1, 1 / frameAspectRatio));
+}
+
+ProjectiveCamera::ProjectiveCamera(const Transform& cameraToWorld,
+                                   const ProjectiveCameraOptions& options, Float originScale,
+                                   Float directionScale)
+    : cameraToWorld_(cameraToWorld), options_(options) {
+  // Screen to raster flips y so that raster y grows downwards (lrt draft §6.1). The composition
+  // raster -> screen -> pinhole ray is affine, so it is computed directly rather than through
+  // the 4x4 projective matrix, which loses precision for a far yon.
+  const Bounds2f& sw = options.screenWindow;
+  Float xres = Float(options.fullResolution.x), yres = Float(options.fullResolution.y);
+  Float dxScreen = (sw.pMax.x - sw.pMin.x) / xres, dyScreen = (sw.pMax.y - sw.pMin.y) / yres;
+  o0_ = Point3f(sw.pMin.x * originScale, sw.pMax.y * originScale, 0);
+  oDx_ = Vector3f(dxScreen * originScale, 0, 0);
+  oDy_ = Vector3f(0, -dyScreen * originScale, 0);
+  d0_ = Vector3f(sw.pMin.x * directionScale, sw.pMax.y * directionScale, 1);
+  dDx_ = Vector3f(dxScreen * directionScale, 0, 0);
+  dDy_ = Vector3f(0, -dyScreen * directionScale, 0);
+}
+
+Point2f ProjectiveCamera::rasterToScreen(const Point2f& pRaster) const {
+  const Bounds2f& sw = options_.screenWindow;
+  Float xres = Float(options_.fullResolution.x), yres = Float(options_.fullResolution.y);
+  return Point2f(sw.pMin.x + pRaster.x * ((sw.pMax.x - sw.pMin.x) / xres),
+                 sw.pMax.y - pRaster.y * ((sw.pMax.y - sw.pMin.y) / yres));
+}
+
+void ProjectiveCamera::pinholeRay(const Point2f& pRaster, Point3f* o, Vector3f* d) const {
+  *o = Point3f(o0_.x + pRaster.x * oDx_.x, o0_.y + pRaster.y * oDy_.y, 0);
+  *d = Vector3f(d0_.x + pRaster.x * dDx_.x, d0_.y + pRaster.y * dDy_.y, 1);
+}
+
+void ProjectiveCamera::lensRay(Point3f o, Vector3f d, const Point2f& uLens, Point3f* origin,
+                               Vector3f* dir, Float* tMax) const {
+  if (options_.lensRadius > 0) {
+    // Thin lens (lrt draft §6.2.3): every ray from the film point through the lens meets the
+    // pinhole ray on the plane of focus z = focalDistance (d.z = 1, so t = focalDistance). The
+    // lens is centred on the pinhole ray's origin: for the orthographic camera that is the film
+    // point, not the camera's origin as in pbrt-v2/v3, whose rays all leave from a lens around
+    // the optical axis and so blur wrongly off-axis (pbrt-v3 issue #315).
+    Point2f pLens = sampleUniformDiskConcentric(uLens) * options_.lensRadius;
+    Point3f pFocus = o + d * options_.focalDistance;
+    o = Point3f(o.x + pLens.x, o.y + pLens.y, 0);
+    d = pFocus - o;
+  }
+  d = normalize(d);
+  // Start at the hither plane and stop at the yon plane (lrt draft §6.1: clipping planes).
+  *origin = o + d * (options_.hither / d.z);
+  *dir = d;
+  *tMax = (options_.yon - options_.hither) / d.z;
+}
+
+Ray ProjectiveCamera::toWorld(const Point3f& o, const Vector3f& d, Float tMax, Float time) const {
+  Vector3f dw = cameraToWorld_(d);
+  Float len = dw.length();
+  return Ray(cameraToWorld_(o), dw / len, tMax * len, time);
+}
+
+Float ProjectiveCamera::generateRay(const CameraSample& sample, Ray* ray) const {
+  Point3f o, origin;
+  Vector3f d, dir;
+  Float tMax;
+  pinholeRay(sample.pFilm, &o, &d);
+  lensRay(o, d, sample.pLens, &origin, &dir, &tMax);
+  Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
+  *ray = toWorld(origin, dir, tMax, time);
+  return 1;
+}
+
+Float ProjectiveCamera::generateRayDifferential(const CameraSample& sample,
+                                                RayDifferential* ray) const {
+  Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
+  Point3f o, origin;
+  Vector3f d, dir;
+  Float tMax, unused;
+  pinholeRay(sample.pFilm, &o, &d);
+  lensRay(o, d, sample.pLens, &origin, &dir, &tMax);
+  *ray = RayDifferential(toWorld(origin, dir, tMax, time));
+  // One pixel over moves the pinhole ray by the affine map's x and y steps.
+  lensRay(o + oDx_, d + dDx_, sample.pLens, &origin, &dir, &unused);
+  Ray rx = toWorld(origin, dir, kInfinity, time);
+  lensRay(o + oDy_, d + dDy_, sample.pLens, &origin, &dir, &unused);
+  Ray ry = toWorld(origin, dir, kInfinity, time);
+  ray->rxOrigin = rx.o;
+  ray->rxDirection = rx.d;
+  ray->ryOrigin = ry.o;
+  ray->ryDirection = ry.d;
+  ray->hasDifferentials = true;
+  return 1;
+}
+
+}  // namespace candela
