@@ -83,13 +83,15 @@ class MaterialCache {
   std::map<int, const Material*> byIndex_;
 };
 
-void addShape(const ShapeDesc& sd, const Transform& objectToWorld, bool allowAreaLight,
-              MaterialCache& materials, RenderJob& job, const WarningSink& warn) {
+// Creates the shapes of sd under objectToWorld and appends their primitives to *out. When
+// noAreaLight is set, an area light in effect is ignored with that warning.
+void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* noAreaLight,
+              MaterialCache& materials, RenderJob& job, std::vector<Primitive>* out,
+              const WarningSink& warn) {
   CreatedShapes created = createShapes(sd, objectToWorld);
   reportUnused(sd, warn);
   const Material* material = materials.get(sd.material);
-  if (sd.objectToWorld.isAnimated() && warn)
-    warn(sd.loc, "animated shape transforms are not supported yet; using the start transform");
+  bool allowAreaLight = noAreaLight == nullptr;
   if (created.mesh) {
     job.meshes.push_back(std::move(created.mesh));
     ++job.stats.triangleMeshes;
@@ -103,12 +105,63 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, bool allowAre
       ++job.stats.areaLights;
     }
     ++job.stats.shapesByKind[shape->kind()];
-    job.primitives.push_back(Primitive{shape.get(), material, area});
+    out->push_back(Primitive{shape.get(), material, area});
     job.shapes.push_back(std::move(shape));
   }
   if (sd.areaLight && allowAreaLight) reportUnused(*sd.areaLight, warn);
-  if (sd.areaLight && !allowAreaLight && warn)
-    warn(sd.loc, "area lights inside object instances are ignored (as in pbrt)");
+  if (sd.areaLight && !allowAreaLight && warn) warn(sd.loc, noAreaLight);
+}
+
+AnimatedTransform animated(const AnimatedTransformDesc& d) {
+  return AnimatedTransform(d.start, d.startTime, d.end, d.endTime);
+}
+
+// The scene's geometry as SceneGeometry (DESIGN.md: static instances are Embree instances,
+// animated ones user geometry): static shapes are world-space primitives; each object
+// definition that is used becomes one prototype, created once and shared by all its uses; an
+// animated shape is created in its object space as a prototype of its own with one instance
+// under its animated transform (pbrt-v3 wraps it in a TransformedPrimitive the same way).
+void addGeometry(const SceneDescription& desc, MaterialCache& materials, RenderJob& job,
+                 const WarningSink& warn) {
+  SceneGeometry& geometry = job.geometry;
+  for (const ShapeDesc& sd : desc.shapes) {
+    if (!sd.objectToWorld.isAnimated()) {
+      addShape(sd, sd.objectToWorld.start, nullptr, materials, job, &geometry.primitives, warn);
+      continue;
+    }
+    auto proto = std::make_unique<InstancePrototype>();
+    proto->name = sd.name;
+    addShape(sd, Transform(),
+             "area lights on shapes with animated transforms are ignored (as in pbrt)", materials,
+             job, &proto->primitives, warn);
+    geometry.instances.push_back(Instance{proto.get(), animated(sd.objectToWorld)});
+    geometry.prototypes.push_back(std::move(proto));
+  }
+  std::map<std::string, const InstancePrototype*> prototypes;
+  for (const InstanceUse& use : desc.instanceUses) {
+    auto [it, isNew] = prototypes.try_emplace(use.name, nullptr);
+    if (isNew) {
+      const InstanceDefinition* def = nullptr;
+      for (const auto& d : desc.instanceDefinitions)
+        if (d.name == use.name) def = &d;
+      if (!def) throw SceneError(use.loc, "unknown object '" + use.name + "'");
+      auto proto = std::make_unique<InstancePrototype>();
+      proto->name = def->name;
+      for (const ShapeDesc& sd : def->shapes) {
+        // A prototype is static; an animation inside it would need a second instancing level.
+        if (sd.objectToWorld.isAnimated() && warn)
+          warn(sd.loc,
+               "animated transforms of shapes inside object definitions are not supported; "
+               "using the start transform");
+        addShape(sd, sd.objectToWorld.start,
+                 "area lights inside object instances are ignored (as in pbrt)", materials, job,
+                 &proto->primitives, warn);
+      }
+      it->second = proto.get();
+      geometry.prototypes.push_back(std::move(proto));
+    }
+    geometry.instances.push_back(Instance{it->second, animated(use.instanceToWorld)});
+  }
 }
 
 }  // namespace
@@ -164,17 +217,7 @@ RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& optio
 
   // Geometry, materials and lights: only what the shapes use.
   MaterialCache materials(desc, job, warn);
-  for (const ShapeDesc& sd : desc.shapes)
-    addShape(sd, sd.objectToWorld.start, true, materials, job, warn);
-  // Object instances are flattened: each use adds the prototype's shapes under its transform.
-  for (const InstanceUse& use : desc.instanceUses) {
-    const InstanceDefinition* def = nullptr;
-    for (const auto& d : desc.instanceDefinitions)
-      if (d.name == use.name) def = &d;
-    if (!def) throw SceneError(use.loc, "unknown object '" + use.name + "'");
-    for (const ShapeDesc& sd : def->shapes)
-      addShape(sd, use.instanceToWorld.start * sd.objectToWorld.start, false, materials, job, warn);
-  }
+  addGeometry(desc, materials, job, warn);
   for (const LightDesc& ld : desc.lights) {
     job.lights.push_back(createLight(ld));
     reportUnused(ld, warn);
@@ -183,7 +226,7 @@ RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& optio
   job.stats.materials = long(job.materials.size());
   job.stats.textures = job.textures->texturesCreated();
 
-  job.aggregate = std::make_unique<EmbreeAggregate>(device, job.primitives);
+  job.aggregate = std::make_unique<EmbreeAggregate>(device, job.geometry);
   job.stats.aggregate = job.aggregate->stats();
   std::vector<const Light*> lights;
   for (const auto& l : job.lights) lights.push_back(l.get());

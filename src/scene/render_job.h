@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "accel/aggregate.h"
+#include "accel/scene_geometry.h"
 #include "cameras/camera.h"
 #include "film/film.h"
 #include "integrators/integrator.h"
@@ -59,7 +60,7 @@ struct RenderJob {
   std::vector<std::unique_ptr<TriangleMesh>> meshes;
   std::vector<std::unique_ptr<Shape>> shapes;
   std::vector<std::unique_ptr<Light>> lights;
-  std::vector<Primitive> primitives;
+  SceneGeometry geometry;  // the aggregate's primitives and instances
   std::unique_ptr<Aggregate> aggregate;
   std::unique_ptr<Scene> scene;
   std::unique_ptr<Film> film;

@@ -1,19 +1,14 @@
 #include "accel/embree/embree_aggregate.h"
 
-#include <embree3/rtcore.h>
+#include <map>
 
+#include "accel/embree/embree_geometry.h"
+#include "core/interaction_transform.h"
 #include "shapes/triangle_mesh.h"
 
 namespace candela {
 
 namespace {
-
-using Geometry = EmbreeAggregate::Geometry;
-
-// Embree's t interval is closed, [tnear, tfar]; ours is open, (0, tMax). The smallest normal
-// float as tnear drops hits at exactly t = 0 (an origin on a triangle's plane: Embree's test
-// accepts tnear <= t) and is unaffected by denormals-are-zero.
-constexpr float kTNear = std::numeric_limits<float>::min();
 
 bool isFinite(const Point3f& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
@@ -27,165 +22,40 @@ bool isTraceable(const Ray& ray) {
   return isFinite(ray.o) && isFinite(ray.d) && ray.d != Vector3f() && ray.tMax > 0;
 }
 
-void toEmbree(const Ray& ray, RTCRay* r) {
-  r->org_x = ray.o.x;
-  r->org_y = ray.o.y;
-  r->org_z = ray.o.z;
-  r->dir_x = ray.d.x;
-  r->dir_y = ray.d.y;
-  r->dir_z = ray.d.z;
-  r->tnear = kTNear;
-  // Closed on Embree's side: the float just below tMax keeps tMax itself out.
-  r->tfar = nextFloatDown(ray.tMax);
-  r->time = ray.time;
-  r->mask = 0xFFFFFFFFu;
-  r->id = 0;
-  r->flags = 0;
-}
-
-// Lane i of an N-wide Embree ray as one of ours, with tMax just above tfar so that the shape's
-// open interval (0, tMax) matches Embree's closed [tnear, tfar].
-Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) {
-  Point3f o(RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i));
-  Vector3f d(RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i));
-  return Ray(o, d, nextFloatUp(RTCRayN_tfar(rays, N, i)), RTCRayN_time(rays, N, i));
-}
-
-const Shape* userShape(const void* userPtr, unsigned primID) {
-  const auto* g = static_cast<const Geometry*>(userPtr);
-  return g->primitives[g->primIndex[primID]].shape;
-}
-
-// User geometry callbacks. Embree may call them with packets of N rays (N = 1 for the
-// rtcIntersect1/rtcOccluded1 we use); lanes whose valid[] is not -1 are inactive.
-void userBounds(const RTCBoundsFunctionArguments* args) {
-  Bounds3f b = userShape(args->geometryUserPtr, args->primID)->worldBound();
-  RTCBounds* out = args->bounds_o;
-  out->lower_x = b.pMin.x;
-  out->lower_y = b.pMin.y;
-  out->lower_z = b.pMin.z;
-  out->upper_x = b.pMax.x;
-  out->upper_y = b.pMax.y;
-  out->upper_z = b.pMax.z;
-}
-
-void userIntersect(const RTCIntersectFunctionNArguments* args) {
-  const Shape* shape = userShape(args->geometryUserPtr, args->primID);
-  unsigned N = args->N;
-  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
-  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, N);
-  for (unsigned i = 0; i < N; ++i) {
-    if (args->valid[i] != -1) continue;
-    Ray ray = laneRay(rays, N, i);
-    Float t;
-    if (!shape->intersect(ray, &t, nullptr) || t < RTCRayN_tnear(rays, N, i)) continue;
-    RTCRayN_tfar(rays, N, i) = t;
-    // The interaction is recomputed for the closest hit only, after the query; Embree needs
-    // no normal or (u, v) here.
-    RTCHitN_Ng_x(hits, N, i) = 0;
-    RTCHitN_Ng_y(hits, N, i) = 0;
-    RTCHitN_Ng_z(hits, N, i) = 0;
-    RTCHitN_u(hits, N, i) = 0;
-    RTCHitN_v(hits, N, i) = 0;
-    RTCHitN_primID(hits, N, i) = args->primID;
-    RTCHitN_geomID(hits, N, i) = args->geomID;
-    RTCHitN_instID(hits, N, i, 0) = args->context->instID[0];
-  }
-}
-
-void userOccluded(const RTCOccludedFunctionNArguments* args) {
-  const Shape* shape = userShape(args->geometryUserPtr, args->primID);
-  unsigned N = args->N;
-  for (unsigned i = 0; i < N; ++i) {
-    if (args->valid[i] != -1) continue;
-    Ray ray = laneRay(args->ray, N, i);
-    if (shape->intersectP(ray)) RTCRayN_tfar(args->ray, N, i) = -kInfinity;  // Embree's "occluded"
-  }
+RTCBuildQuality embreeQuality(int q) {
+  return q == int(EmbreeAggregate::BuildQuality::High) ? RTC_BUILD_QUALITY_HIGH
+                                                       : RTC_BUILD_QUALITY_MEDIUM;
 }
 
 }  // namespace
 
 EmbreeAggregate::EmbreeAggregate(const EmbreeDevice& device,
                                  const std::vector<Primitive>& primitives, BuildQuality quality)
-    : device_(&device), primitives_(primitives.data()) {
-  RTCDevice dev = device_->handle();
-  RTCBuildQuality q =
-      quality == BuildQuality::High ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
-  scene_ = rtcNewScene(dev);
+    : EmbreeAggregate(device, primitives.data(), primitives.size(), nullptr, quality) {}
+
+EmbreeAggregate::EmbreeAggregate(const EmbreeDevice& device, const SceneGeometry& geometry,
+                                 BuildQuality quality)
+    : EmbreeAggregate(device, geometry.primitives.data(), geometry.primitives.size(), &geometry,
+                      quality) {}
+
+EmbreeAggregate::EmbreeAggregate(const EmbreeDevice& device, const Primitive* primitives,
+                                 size_t count, const SceneGeometry* geometry, BuildQuality quality)
+    : device_(&device), quality_(int(quality)) {
+  scene_ = rtcNewScene(device_->handle());
   device_->check("rtcNewScene");
   try {
     // Robust traversal: no misses through edges and vertices for extreme ray directions.
     rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(scene_, q);
-    auto attach = [&](RTCGeometry g, std::unique_ptr<Geometry> info) {
-      rtcSetGeometryBuildQuality(g, q);
-      if (info->isUser) rtcSetGeometryUserData(g, info.get());
-      rtcCommitGeometry(g);
-      unsigned id = rtcAttachGeometry(scene_, g);
-      rtcReleaseGeometry(g);
-      device_->check("creating an Embree geometry");
-      if (id != geometries_.size()) throw EmbreeError("Embree: unexpected geometry ID");
-      geometries_.push_back(std::move(info));
-    };
-
-    auto userPrims = std::make_unique<Geometry>();
-    userPrims->isUser = true;
-    userPrims->primitives = primitives_;
-    size_t n = primitives.size();
-    for (size_t i = 0; i < n;) {
-      const Shape* shape = primitives[i].shape;
-      int tri = 0;
-      const TriangleMesh* mesh = shape ? shape->triangleMesh(&tri) : nullptr;
-      if (!mesh || !dynamic_cast<const TriangleShape*>(shape)) {
-        if (shape) userPrims->primIndex.push_back(uint32_t(i));
-        ++i;
-        continue;
-      }
-      // The run of consecutive triangles of this mesh: one native triangle geometry, with the
-      // mesh's world-space vertices.
-      auto info = std::make_unique<Geometry>();
-      info->primitives = primitives_;
-      std::vector<unsigned> indices;
-      for (; i < n; ++i) {
-        const Shape* s = primitives[i].shape;
-        if (!s || s->triangleMesh(&tri) != mesh || !dynamic_cast<const TriangleShape*>(s)) break;
-        for (int k = 0; k < 3; ++k) indices.push_back(unsigned(mesh->indices[3 * tri + k]));
-        info->primIndex.push_back(uint32_t(i));
-      }
-      RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-      // Embree may read 16 bytes at the last vertex; its own buffers are padded for that.
-      auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
-          g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh->p.size()));
-      auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-          g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), indices.size() / 3));
-      device_->check("allocating Embree triangle buffers");
-      for (size_t v = 0; v < mesh->p.size(); ++v) {
-        vb[3 * v + 0] = mesh->p[v].x;
-        vb[3 * v + 1] = mesh->p[v].y;
-        vb[3 * v + 2] = mesh->p[v].z;
-      }
-      std::copy(indices.begin(), indices.end(), ib);
-      triangles_ += long(info->primIndex.size());
-      ++triangleGeometries_;
-      attach(g, std::move(info));
-    }
-    if (!userPrims->primIndex.empty()) {
-      RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_USER);
-      rtcSetGeometryUserPrimitiveCount(g, unsigned(userPrims->primIndex.size()));
-      rtcSetGeometryBoundsFunction(g, userBounds, nullptr);
-      rtcSetGeometryIntersectFunction(g, userIntersect);
-      rtcSetGeometryOccludedFunction(g, userOccluded);
-      userPrimitives_ = long(userPrims->primIndex.size());
-      ++userGeometries_;
-      attach(g, std::move(userPrims));
-    }
+    rtcSetSceneBuildQuality(scene_, embreeQuality(quality_));
+    addPrimitives(primitives, count);
+    if (geometry) addInstances(*geometry);
     rtcCommitScene(scene_);
     device_->check("rtcCommitScene");
   } catch (...) {
     rtcReleaseScene(scene_);
     throw;
   }
-  if (!primitives.empty()) {
+  if (!geometries_.empty()) {
     RTCBounds b;
     rtcGetSceneBounds(scene_, &b);
     if (b.lower_x <= b.upper_x)
@@ -195,48 +65,189 @@ EmbreeAggregate::EmbreeAggregate(const EmbreeDevice& device,
 }
 
 EmbreeAggregate::~EmbreeAggregate() {
+  // The scene goes before the prototypes' scenes it instances (Embree counts references, so
+  // either order is safe; this one reads naturally).
   if (scene_) rtcReleaseScene(scene_);
 }
 
-bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const {
-  if (!isTraceable(ray)) return false;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit rh;
-  toEmbree(ray, &rh.ray);
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_, &context, &rh);
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+unsigned EmbreeAggregate::attach(RTCGeometry g, std::unique_ptr<EmbreeGeometry> info) {
+  rtcSetGeometryBuildQuality(g, embreeQuality(quality_));
+  rtcSetGeometryUserData(g, info.get());
+  rtcCommitGeometry(g);
+  unsigned id = rtcAttachGeometry(scene_, g);
+  rtcReleaseGeometry(g);
+  device_->check("creating an Embree geometry");
+  if (id != geometries_.size()) throw EmbreeError("Embree: unexpected geometry ID");
+  geometries_.push_back(std::move(info));
+  return id;
+}
 
-  const Geometry& g = *geometries_[rh.hit.geomID];
-  const Primitive& prim = primitives_[g.primIndex[rh.hit.primID]];
-  if (g.isUser) {
-    // The shape's own intersection again, on the same ray limited to just past the hit: it is
-    // deterministic, so it finds the same t, now with the full interaction.
-    Ray clipped = ray;
-    clipped.tMax = nextFloatUp(rh.ray.tfar);
-    Float t;
-    if (!prim.shape->intersect(clipped, &t, isect)) return false;
-    ray.tMax = t;
+void EmbreeAggregate::addPrimitives(const Primitive* primitives, size_t n) {
+  RTCDevice dev = device_->handle();
+  auto userPrims = std::make_unique<EmbreeGeometry>();
+  userPrims->kind = EmbreeGeometry::Kind::Shapes;
+  userPrims->primitives = primitives;
+  for (size_t i = 0; i < n;) {
+    const Shape* shape = primitives[i].shape;
+    int tri = 0;
+    const TriangleMesh* mesh = shape ? shape->triangleMesh(&tri) : nullptr;
+    if (!mesh || !dynamic_cast<const TriangleShape*>(shape)) {
+      if (shape) userPrims->primIndex.push_back(uint32_t(i));
+      ++i;
+      continue;
+    }
+    // The run of consecutive triangles of this mesh: one native triangle geometry, with the
+    // mesh's vertices (world space, or the prototype's space in a prototype).
+    auto info = std::make_unique<EmbreeGeometry>();
+    info->kind = EmbreeGeometry::Kind::Triangles;
+    info->primitives = primitives;
+    std::vector<unsigned> indices;
+    for (; i < n; ++i) {
+      const Shape* s = primitives[i].shape;
+      if (!s || s->triangleMesh(&tri) != mesh || !dynamic_cast<const TriangleShape*>(s)) break;
+      for (int k = 0; k < 3; ++k) indices.push_back(unsigned(mesh->indices[3 * tri + k]));
+      info->primIndex.push_back(uint32_t(i));
+    }
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree may read 16 bytes at the last vertex; its own buffers are padded for that.
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh->p.size()));
+    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), indices.size() / 3));
+    device_->check("allocating Embree triangle buffers");
+    for (size_t v = 0; v < mesh->p.size(); ++v) {
+      vb[3 * v + 0] = mesh->p[v].x;
+      vb[3 * v + 1] = mesh->p[v].y;
+      vb[3 * v + 2] = mesh->p[v].z;
+    }
+    std::copy(indices.begin(), indices.end(), ib);
+    triangles_ += long(info->primIndex.size());
+    ++triangleGeometries_;
+    attach(g, std::move(info));
+  }
+  if (!userPrims->primIndex.empty()) {
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(g, unsigned(userPrims->primIndex.size()));
+    rtcSetGeometryBoundsFunction(g, shapeBounds, nullptr);
+    rtcSetGeometryIntersectFunction(g, shapeIntersect);
+    rtcSetGeometryOccludedFunction(g, shapeOccluded);
+    userPrimitives_ = long(userPrims->primIndex.size());
+    ++userGeometries_;
+    attach(g, std::move(userPrims));
+  }
+}
+
+void EmbreeAggregate::addInstances(const SceneGeometry& geometry) {
+  RTCDevice dev = device_->handle();
+  // Each prototype's scene is built once, on its first use, and shared by all its instances.
+  std::map<const InstancePrototype*, const EmbreeAggregate*> built;
+  auto prototypeOf = [&](const InstancePrototype* p) -> const EmbreeAggregate* {
+    if (!p || p->primitives.empty()) return nullptr;
+    if (auto it = built.find(p); it != built.end()) return it->second;
+    prototypes_.push_back(std::unique_ptr<EmbreeAggregate>(new EmbreeAggregate(
+        *device_, p->primitives.data(), p->primitives.size(), nullptr, BuildQuality(quality_))));
+    return built[p] = prototypes_.back().get();
+  };
+
+  auto motion = std::make_unique<EmbreeGeometry>();
+  motion->kind = EmbreeGeometry::Kind::MotionInstances;
+  for (const Instance& inst : geometry.instances) {
+    const EmbreeAggregate* proto = prototypeOf(inst.prototype);
+    if (!proto) continue;
+    ++instances_;
+    if (inst.instanceToWorld.isAnimated()) {
+      motion->motion.push_back({proto, proto->scene_, &inst.instanceToWorld,
+                                inst.instanceToWorld.motionBounds(proto->bounds_)});
+      continue;
+    }
+    const Transform& t = inst.instanceToWorld.start();
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, proto->scene_);
+    float rows[12];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j) rows[4 * i + j] = t.matrix().m[i][j];
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
+    auto info = std::make_unique<EmbreeGeometry>();
+    info->kind = EmbreeGeometry::Kind::Instance;
+    info->prototype = proto;
+    info->instanceToWorld = &t;
+    ++instanceGeometries_;
+    attach(g, std::move(info));
+  }
+  if (!motion->motion.empty()) {
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(g, unsigned(motion->motion.size()));
+    rtcSetGeometryBoundsFunction(g, motionBounds, nullptr);
+    rtcSetGeometryIntersectFunction(g, motionIntersect);
+    rtcSetGeometryOccludedFunction(g, motionOccluded);
+    motionInstances_ = long(motion->motion.size());
+    ++motionGeometries_;
+    attach(g, std::move(motion));
+  }
+}
+
+bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned primID, float u, float v,
+                                    float t, const Ray& ray, const Ray& shapeRay,
+                                    SurfaceInteraction* isect) const {
+  const Primitive& prim = g.primitive(primID);
+  if (g.kind == EmbreeGeometry::Kind::Shapes) {
+    // The shape's own intersection again, on the very ray its callback accepted the hit on,
+    // limited to just past the hit: it is deterministic, so it finds the same t, now with the
+    // full interaction.
+    Ray clipped = shapeRay;
+    clipped.tMax = nextFloatUp(t);
+    Float tHit;
+    if (!prim.shape->intersect(clipped, &tHit, isect)) return false;
   } else {
     // Embree's (u, v) are the barycentrics of vertices 1 and 2.
     const auto* tri = static_cast<const TriangleShape*>(prim.shape);
-    *isect = tri->interactionAt(ray, rh.hit.u, rh.hit.v, rh.ray.tfar);
-    ray.tMax = rh.ray.tfar;
+    *isect = tri->interactionAt(ray, u, v, t);
   }
   isect->primitive = &prim;
   return true;
 }
 
+bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const {
+  if (!isTraceable(ray)) return false;
+  QueryContext context;
+  RTCRayHit rh;
+  toEmbreeRay(ray, &rh.ray);
+  rh.hit.geomID = rh.hit.primID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &context.rtc, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+
+  float t = rh.ray.tfar;
+  if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+    // A static instance: the hit is on the prototype's geometry geomID; the interaction is
+    // found in the prototype's space and carried to world space (lrt draft §4.1.2).
+    const EmbreeGeometry& inst = *geometries_[rh.hit.instID[0]];
+    const EmbreeAggregate& proto = *inst.prototype;
+    if (!proto.interactionAt(*proto.geometries_[rh.hit.geomID], rh.hit.primID, rh.hit.u, rh.hit.v,
+                             t, ray, context.shapeRay, isect))
+      return false;
+    *isect = transformSurfaceInteraction(*inst.instanceToWorld, *isect, ray.d);
+  } else if (const EmbreeGeometry& g = *geometries_[rh.hit.geomID];
+             g.kind == EmbreeGeometry::Kind::MotionInstances) {
+    const PrototypeHit& h = context.motionHit;
+    const EmbreeAggregate& proto = *g.motion[rh.hit.primID].prototype;
+    if (!proto.interactionAt(*proto.geometries_[h.geomID], h.primID, h.u, h.v, t, ray, h.shapeRay,
+                             isect))
+      return false;
+    *isect = transformSurfaceInteraction(h.instanceToWorld, *isect, ray.d);
+  } else {
+    if (!interactionAt(g, rh.hit.primID, rh.hit.u, rh.hit.v, t, ray, context.shapeRay, isect))
+      return false;
+  }
+  ray.tMax = t;
+  return true;
+}
+
 bool EmbreeAggregate::intersectP(const Ray& ray) const {
   if (!isTraceable(ray)) return false;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  QueryContext context;
   RTCRay r;
-  toEmbree(ray, &r);
-  rtcOccluded1(scene_, &context, &r);
+  toEmbreeRay(ray, &r);
+  rtcOccluded1(scene_, &context.rtc, &r);
   return r.tfar == -kInfinity;
 }
 
@@ -247,6 +258,20 @@ AggregateStats EmbreeAggregate::stats() const {
   s.counts["embree user geometries"] = userGeometries_;
   s.counts["triangles"] = triangles_;
   s.counts["user primitives"] = userPrimitives_;
+  if (instances_ > 0) {
+    long protoTriangles = 0, protoUser = 0;
+    for (const auto& p : prototypes_) {
+      protoTriangles += p->triangles_;
+      protoUser += p->userPrimitives_;
+    }
+    s.counts["instances"] = instances_;
+    s.counts["prototypes"] = long(prototypes_.size());
+    s.counts["embree instance geometries"] = instanceGeometries_;
+    s.counts["embree motion user geometries"] = motionGeometries_;
+    s.counts["motion instances"] = motionInstances_;
+    s.counts["prototype triangles"] = protoTriangles;
+    s.counts["prototype user primitives"] = protoUser;
+  }
   return s;
 }
 

@@ -1,18 +1,28 @@
 // The Aggregate on Embree (DESIGN.md, "Intersection is Embree's"). Runs of consecutive triangles
 // of one mesh become one native Embree triangle geometry; every other shape (the quadrics) is a
 // primitive of one Embree user geometry whose callbacks call the shape's own intersection.
+// Object instances (ObjectBegin/ObjectInstance, lrt draft §4.1.2) share one child scene per
+// prototype: a static instance is an Embree instance geometry of it, so memory does not grow
+// with the number of instances; instances with animated transforms are primitives of a user
+// geometry that queries the child scene with the ray taken to prototype space at its time
+// (Embree would interpolate the matrices entry by entry; the book decomposes them, pbrt 2e
+// §2.9.3). Debian's Embree has one instancing level, which is all pbrt scenes can express.
 #pragma once
 
-#include <cstdint>
 #include <memory>
 #include <vector>
 
 #include "accel/aggregate.h"
 #include "accel/embree/embree_device.h"
+#include "accel/scene_geometry.h"
 
-struct RTCSceneTy;  // Embree's RTCScene is RTCSceneTy*
+struct RTCSceneTy;     // Embree's RTCScene is RTCSceneTy*
+struct RTCGeometryTy;  // and RTCGeometry is RTCGeometryTy*
 
 namespace candela {
+
+struct EmbreeGeometry;
+struct QueryContext;
 
 class EmbreeAggregate : public Aggregate {
  public:
@@ -21,6 +31,12 @@ class EmbreeAggregate : public Aggregate {
   // Neither device nor primitives is copied: both must outlive the aggregate, and primitives
   // must stay where they are, since hits point into them. Throws EmbreeError when Embree fails.
   EmbreeAggregate(const EmbreeDevice& device, const std::vector<Primitive>& primitives,
+                  BuildQuality quality = BuildQuality::Medium);
+  // All of geometry: its world-space primitives, and its instances, each prototype built once
+  // (only if some instance uses it and it has primitives). geometry is not copied and must
+  // outlive the aggregate unchanged. A hit inside an instance reports the prototype's
+  // primitive and the interaction in world space.
+  EmbreeAggregate(const EmbreeDevice& device, const SceneGeometry& geometry,
                   BuildQuality quality = BuildQuality::Medium);
   ~EmbreeAggregate() override;
   EmbreeAggregate(const EmbreeAggregate&) = delete;
@@ -32,23 +48,33 @@ class EmbreeAggregate : public Aggregate {
   bool intersect(const Ray& ray, SurfaceInteraction* isect) const override;
   bool intersectP(const Ray& ray) const override;
   // counts: "embree triangle geometries", "embree user geometries", "triangles",
-  // "user primitives".
+  // "user primitives" (of this scene, prototypes not included); with instances also
+  // "instances", "prototypes", "embree instance geometries" (static instances),
+  // "embree motion user geometries", "motion instances", "prototype triangles",
+  // "prototype user primitives".
   AggregateStats stats() const override;
 
-  // Per Embree geometry: which primitive each Embree primID is.
-  struct Geometry {
-    bool isUser = false;
-    const Primitive* primitives = nullptr;  // the aggregate's primitives
-    std::vector<uint32_t> primIndex;        // primID -> index into primitives
-  };
-
  private:
+  EmbreeAggregate(const EmbreeDevice& device, const Primitive* primitives, size_t count,
+                  const SceneGeometry* geometry, BuildQuality quality);
+  void addPrimitives(const Primitive* primitives, size_t count);
+  void addInstances(const SceneGeometry& geometry);
+  unsigned attach(RTCGeometryTy* g, std::unique_ptr<EmbreeGeometry> info);
+  // The interaction (in this aggregate's space) of the hit (primID, u, v) on geometry g of this
+  // scene at ray parameter t. ray is the query's ray in this space (only its time and
+  // direction are used, for triangles); shapeRay is the ray the Shapes callback accepted the
+  // hit on (QueryContext::shapeRay).
+  bool interactionAt(const EmbreeGeometry& g, unsigned primID, float u, float v, float t,
+                     const Ray& ray, const Ray& shapeRay, SurfaceInteraction* isect) const;
+
   const EmbreeDevice* device_;
   RTCSceneTy* scene_ = nullptr;
-  const Primitive* primitives_ = nullptr;
-  std::vector<std::unique_ptr<Geometry>> geometries_;  // by geomID; stable for Embree's user ptr
+  int quality_;
+  std::vector<std::unique_ptr<EmbreeGeometry>> geometries_;  // by geomID; stable user pointers
+  std::vector<std::unique_ptr<EmbreeAggregate>> prototypes_;
   Bounds3f bounds_;
   long triangleGeometries_ = 0, userGeometries_ = 0, triangles_ = 0, userPrimitives_ = 0;
+  long instances_ = 0, instanceGeometries_ = 0, motionGeometries_ = 0, motionInstances_ = 0;
 };
 
 }  // namespace candela
