@@ -1,0 +1,131 @@
+#!/usr/bin/python3
+"""Convergence benchmark: error against run time for the example scenes x integrators x samplers.
+
+    benchmarks/convergence.py [--out DIR] [--spp N] [--ref-spp N] [--full]
+
+Renders each scene's reference once (tools/reference.sh caches it), then each combination with
+--reference and --error-log, and writes DIR/convergence.csv (the table), DIR/convergence.md (the
+same as Markdown) and one plot per scene DIR/<scene>.png (tools/plot_convergence.py). By default
+scenes render at --quick resolution so the whole run takes a few minutes on two cores.
+
+Columns: time to reach relMSE 1e-2 and 1e-3 (log-log interpolation between passes; '-' when not
+reached), and relMSE at equal time (the shortest total time of the scene's runs).
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = ["scenes/cornell-box/cornell-box.pbrt", "scenes/spheres/spheres.pbrt"]
+INTEGRATORS = {"path": '"path" "integer maxdepth" [5]',
+               "directlighting": '"directlighting"'}
+SAMPLERS = {"stratified": '"stratified"', "random": '"random"'}
+
+
+def variant(scene_text, integrator, sampler):
+    s = re.sub(r'^SurfaceIntegrator .*$', "SurfaceIntegrator " + INTEGRATORS[integrator], scene_text,
+               flags=re.M)
+    return re.sub(r'^Sampler [^\n]*$', "Sampler " + SAMPLERS[sampler], s, flags=re.M)
+
+
+def read_log(path):
+    with open(path, newline="") as f:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+def time_to(rows, target):
+    prev = None
+    for r in rows:
+        if r["relmse"] <= target:
+            if prev is None:
+                return r["seconds"]
+            # Interpolate in log-log between the passes on either side of the target.
+            lx0, lx1 = math.log(prev["seconds"]), math.log(r["seconds"])
+            ly0, ly1 = math.log(prev["relmse"]), math.log(r["relmse"])
+            t = (math.log(target) - ly0) / (ly1 - ly0) if ly1 != ly0 else 1
+            return math.exp(lx0 + t * (lx1 - lx0))
+        prev = r
+    return None
+
+
+def error_at(rows, seconds):
+    pts = [(math.log(r["seconds"]), math.log(r["relmse"])) for r in rows if r["seconds"] > 0]
+    for (x0, y0), (x1, y1) in zip(pts, pts[1:]):
+        if x0 <= math.log(seconds) <= x1:
+            t = (math.log(seconds) - x0) / (x1 - x0) if x1 != x0 else 0
+            return math.exp(y0 + t * (y1 - y0))
+    return rows[-1]["relmse"] if rows else None
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", default=os.path.join(ROOT, "out", "convergence"))
+    ap.add_argument("--spp", type=int, default=256)
+    ap.add_argument("--ref-spp", type=int, default=4096)
+    ap.add_argument("--full", action="store_true", help="full resolution (slow)")
+    args = ap.parse_args()
+    candela = os.environ.get("CANDELA", os.path.join(ROOT, "build", "candela"))
+    if not os.access(candela, os.X_OK):
+        sys.exit(f"convergence.py: no candela at {candela} (build first)")
+    os.makedirs(args.out, exist_ok=True)
+    quick = [] if args.full else ["--quick"]
+    env = dict(os.environ, CANDELA=candela)
+    table = []
+    for scene in SCENES:
+        name = os.path.splitext(os.path.basename(scene))[0]
+        scene_path = os.path.join(ROOT, scene)
+        ref = subprocess.run([os.path.join(ROOT, "tools", "reference.sh"), scene_path,
+                              str(args.ref_spp), "1000"] + quick, env=env, check=True,
+                             capture_output=True, text=True).stdout.strip()
+        text = open(scene_path).read()
+        logs = {}
+        for integ in INTEGRATORS:
+            for samp in SAMPLERS:
+                label = f"{integ}/{samp}"
+                log = os.path.join(args.out, f"{name}-{integ}-{samp}.csv")
+                if os.path.exists(log):
+                    os.remove(log)
+                with tempfile.NamedTemporaryFile("w", suffix=".pbrt", dir=os.path.dirname(scene_path),
+                                                 delete=False) as f:
+                    f.write(variant(text, integ, samp))
+                try:
+                    subprocess.run([candela, f.name, "--spp", str(args.spp), "--seed", "1",
+                                    "--reference", ref, "--error-log", log, "-o",
+                                    os.path.join(args.out, "last.exr"), "--preview", "none",
+                                    "--quiet"] + quick, check=True)
+                finally:
+                    os.remove(f.name)
+                logs[label] = read_log(log)
+        equal_time = min(rows[-1]["seconds"] for rows in logs.values())
+        for label, rows in logs.items():
+            t2, t3 = time_to(rows, 1e-2), time_to(rows, 1e-3)
+            table.append({"scene": name, "method": label,
+                          "t_relmse_1e-2_s": f"{t2:.3f}" if t2 else "-",
+                          "t_relmse_1e-3_s": f"{t3:.3f}" if t3 else "-",
+                          "equal_time_s": f"{equal_time:.3f}",
+                          "relmse_at_equal_time": f"{error_at(rows, equal_time):.3g}",
+                          "final_spp": int(rows[-1]["spp"]),
+                          "final_relmse": f"{rows[-1]['relmse']:.3g}"})
+        subprocess.run([os.path.join(ROOT, "tools", "plot_convergence.py"),
+                        os.path.join(args.out, f"{name}.png"), "--title", name] +
+                       [f"{label}={os.path.join(args.out, name + '-' + label.replace('/', '-') + '.csv')}"
+                        for label in logs], check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(args.out, "convergence.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(table[0].keys()))
+        w.writeheader()
+        w.writerows(table)
+    with open(os.path.join(args.out, "convergence.md"), "w") as f:
+        keys = list(table[0].keys())
+        f.write("| " + " | ".join(keys) + " |\n|" + "---|" * len(keys) + "\n")
+        for r in table:
+            f.write("| " + " | ".join(str(r[k]) for k in keys) + " |\n")
+    print(open(os.path.join(args.out, "convergence.md")).read())
+
+
+if __name__ == "__main__":
+    main()
