@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# --reference/--error-log write one CSV row per doubling pass; --target-error and --time-budget stop
+# the render and say why in the EXR header.
+set -euo pipefail
+candela=$1 src=$2 work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+scene=$src/scenes/cornell-box/cornell-box.pbrt
+"$candela" "$scene" --quick --spp 16 --seed 9 -o ref.exr --preview none -q
+"$candela" "$scene" --quick --spp 8 -o run.exr --reference ref.exr --error-log log.csv \
+  --preview none -q
+head -1 log.csv | grep -qx 'seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95' ||
+  { echo "FAIL: header"; cat log.csv; exit 1; }
+[ "$(tail -n +2 log.csv | cut -d, -f2 | tr '\n' ' ')" = "1 2 4 8 " ] ||
+  { echo "FAIL: passes"; cat log.csv; exit 1; }
+# A second run appends rows without a second header.
+"$candela" "$scene" --quick --spp 2 -o run.exr --reference ref.exr --error-log log.csv \
+  --preview none -q
+[ "$(grep -c '^seconds' log.csv)" = 1 ] && [ "$(wc -l < log.csv)" = 7 ] ||
+  { echo "FAIL: append"; cat log.csv; exit 1; }
+# Without a reference the target is checked against the variance estimate.
+"$candela" "$scene" --quick --spp 1024 --target-error 0.05 -o t.exr --preview none 2> t.txt
+grep -q "estimated from variance" t.txt || { echo "FAIL: no estimate"; cat t.txt; exit 1; }
+grep -a -q "target error" t.exr || { echo "FAIL: stop reason not in EXR"; exit 1; }
+grep -a -q "candela:targetError" t.exr || { echo "FAIL: target not in EXR"; exit 1; }
+echo "error log: ok"
