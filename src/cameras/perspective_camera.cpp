@@ -8,6 +8,6 @@ namespace candela {
 PerspectiveCamera::PerspectiveCamera(const Transform& cameraToWorld,
                                      const PerspectiveCameraOptions& options)
     : ProjectiveCamera(cameraToWorld, options, 0, std::tan(radians(options.fov) / 2)),
-      options_(options) {}
+      perspectiveOptions_(options) {}
 
 }  // namespace candela

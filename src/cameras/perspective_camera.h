@@ -14,10 +14,10 @@ struct PerspectiveCameraOptions : ProjectiveCameraOptions {
 class PerspectiveCamera final : public ProjectiveCamera {
  public:
   PerspectiveCamera(const Transform& cameraToWorld, const PerspectiveCameraOptions& options);
-  const PerspectiveCameraOptions& options() const { return options_; }
+  const PerspectiveCameraOptions& options() const { return perspectiveOptions_; }
 
  private:
-  PerspectiveCameraOptions options_;
+  PerspectiveCameraOptions perspectiveOptions_;
 };
 
 }  // namespace candela

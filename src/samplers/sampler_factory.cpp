@@ -16,6 +16,7 @@ namespace {
 
 // Large enough for any practical render, small enough that counts and indices fit in 32 bits.
 constexpr int kMaxSamplesPerPixel = 1 << 24;
+constexpr int kMaxBestCandidateSamples = 1 << 16;
 
 int positiveCount(const ParamSet& params, const std::string& name, int def, const FileLoc& loc) {
   int v = params.getOneInt(name, def);
@@ -124,8 +125,16 @@ std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& 
   }
   if (name == "halton")
     return std::make_unique<HaltonSampler>(sampleCount(params, sppOverride, loc), seed);
-  if (name == "bestcandidate")
-    return std::make_unique<BestCandidateSampler>(sampleCount(params, sppOverride, loc), seed);
+  if (name == "bestcandidate") {
+    int spp = sampleCount(params, sppOverride, loc);
+    // The pattern is generated when the sampler is made, in time about linear in the count.
+    if (spp > kMaxBestCandidateSamples)
+      throw SceneError(params.locationOf("pixelsamples", loc),
+                       "bestcandidate sampler: at most " +
+                           std::to_string(kMaxBestCandidateSamples) + " samples per pixel, got " +
+                           std::to_string(spp) + " (lowdiscrepancy and halton take more)");
+    return std::make_unique<BestCandidateSampler>(spp, seed);
+  }
   if (name == "adaptive") return createAdaptive(params, seed, sppOverride, loc, warn);
   throw SceneError(loc, "unknown sampler \"" + name +
                             "\" (known: random, stratified, lowdiscrepancy, halton, "

@@ -134,6 +134,7 @@ TEST(SamplerFactory, NewSamplersDefaultsAndPowerOfTwoRounding) {
   EXPECT_EQ(createSampler("halton", five, 1, 3, loc, warn)->samplesPerPixel(), 3);
   EXPECT_EQ(createSampler("lowdiscrepancy", five, 1, 16, loc, warn)->samplesPerPixel(), 16);
   EXPECT_EQ(warnings.size(), 1u);
+  EXPECT_THROW(createSampler("bestcandidate", five, 1, 1 << 17, loc, warn), SceneError);
 }
 
 TEST(AdaptiveSampler, FactoryDefaultsAndErrors) {
