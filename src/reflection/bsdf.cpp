@@ -76,4 +76,19 @@ Float BSDF::pdf(const Vector3f& woW, const Vector3f& wiW, int flags) const {
   return matching > 0 ? pdf / Float(matching) : 0;
 }
 
+Spectrum BSDF::rho(const Vector3f& woW, std::span<const Point2f> u, int flags) const {
+  Vector3f wo = worldToLocal(woW);
+  Spectrum r(0);
+  for (int i = 0; i < count_; ++i)
+    if (bxdfs_[i]->matches(flags)) r += bxdfs_[i]->rho(wo, u);
+  return r;
+}
+
+Spectrum BSDF::rho(std::span<const Point2f> u1, std::span<const Point2f> u2, int flags) const {
+  Spectrum r(0);
+  for (int i = 0; i < count_; ++i)
+    if (bxdfs_[i]->matches(flags)) r += bxdfs_[i]->rho(u1, u2);
+  return r;
+}
+
 }  // namespace candela

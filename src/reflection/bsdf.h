@@ -32,6 +32,10 @@ class BSDF {
   // Mixture pdf over the matching components (the draft averages over all; the matching count is
   // what sampleF uses, so that is the consistent choice).
   Float pdf(const Vector3f& woW, const Vector3f& wiW, int flags = kAllBxDF) const;
+  // Sums of the matching components' reflectances rho_hd(wo) and rho_hh (lrt draft §10.1).
+  Spectrum rho(const Vector3f& woW, std::span<const Point2f> u, int flags = kAllBxDF) const;
+  Spectrum rho(std::span<const Point2f> u1, std::span<const Point2f> u2,
+               int flags = kAllBxDF) const;
   const Normal3f& geometricNormal() const { return ng_; }
   const Float eta;
 

@@ -17,4 +17,52 @@ Float BxDF::pdf(const Vector3f& wo, const Vector3f& wi) const {
   return sameHemisphere(wo, wi) ? absCosTheta(wi) * kInvPi : 0;
 }
 
+Spectrum BxDF::rho(const Vector3f& wo, std::span<const Point2f> u) const {
+  Spectrum sum(0);
+  for (const Point2f& s : u) {
+    Vector3f wi;
+    Float p = 0;
+    Spectrum f = sampleF(wo, &wi, s, &p);
+    if (p > 0) sum += f * (absCosTheta(wi) / p);
+  }
+  return u.empty() ? sum : sum / Float(u.size());
+}
+
+Spectrum BxDF::rho(std::span<const Point2f> u1, std::span<const Point2f> u2) const {
+  // rho_hh = (1/pi) integral integral f |cos theta_o| |cos theta_i| dwo dwi.
+  Spectrum sum(0);
+  size_t n = std::min(u1.size(), u2.size());
+  for (size_t i = 0; i < n; ++i) {
+    Vector3f wo = sampleUniformHemisphere(u1[i]), wi;
+    Float pdfO = uniformHemispherePdf(), pdfI = 0;
+    Spectrum f = sampleF(wo, &wi, u2[i], &pdfI);
+    if (pdfI > 0) sum += f * (absCosTheta(wi) * absCosTheta(wo) / (pdfO * pdfI));
+  }
+  return n == 0 ? sum : sum / (kPi * Float(n));
+}
+
+std::vector<Point2f> stratifiedSamples2D(int n, RNG& rng) {
+  std::vector<Point2f> s;
+  s.reserve(size_t(n) * size_t(n));
+  Float inv = Float(1) / Float(n);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x)
+      s.emplace_back(std::min((x + rng.uniformFloat()) * inv, kOneMinusEpsilon),
+                     std::min((y + rng.uniformFloat()) * inv, kOneMinusEpsilon));
+  // Shuffle so that pairing two such sets does not correlate their strata.
+  for (size_t i = s.size(); i > 1; --i) std::swap(s[i - 1], s[rng.uniformUInt32(uint32_t(i))]);
+  return s;
+}
+
+Spectrum rhoStratified(const BxDF& bxdf, const Vector3f& wo, int sqrtSamples, RNG& rng) {
+  std::vector<Point2f> u = stratifiedSamples2D(sqrtSamples, rng);
+  return bxdf.rho(wo, u);
+}
+
+Spectrum rhoStratified(const BxDF& bxdf, int sqrtSamples, RNG& rng) {
+  std::vector<Point2f> u1 = stratifiedSamples2D(sqrtSamples, rng);
+  std::vector<Point2f> u2 = stratifiedSamples2D(sqrtSamples, rng);
+  return bxdf.rho(u1, u2);
+}
+
 }  // namespace candela

@@ -19,7 +19,9 @@ Spectrum OrenNayar::f(const Vector3f& wo, const Vector3f& wi) const {
     maxCos = std::max(Float(0), dCos);
   }
   Float sinAlpha, tanBeta;
-  if (absCosTheta(wi) > absCosTheta(wo)) {
+  if (std::max(absCosTheta(wi), absCosTheta(wo)) == 0) {
+    sinAlpha = tanBeta = 0;  // both at grazing: tan(beta) would be 0 / 0
+  } else if (absCosTheta(wi) > absCosTheta(wo)) {
     sinAlpha = sinThetaO;
     tanBeta = sinThetaI / absCosTheta(wi);
   } else {

@@ -1,0 +1,201 @@
+// The BxDFs and incident directions the statistical tests run over: a short list for every run
+// and the full sweep (incident angles from the normal to 89.9 degrees, from both sides,
+// roughness 1e-3 to 1, eta 1.0001 to 10) for the Long suites.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/memory.h"
+#include "reflection/brdf_to_btdf.h"
+#include "reflection/bsdf.h"
+#include "reflection/fresnel_blend.h"
+#include "reflection/irregular_brdf.h"
+#include "reflection/lafortune.h"
+#include "reflection/merl_brdf.h"
+#include "reflection/microfacet.h"
+#include "reflection/oren_nayar.h"
+#include "reflection/specular.h"
+
+namespace candela::testcases {
+
+// A direction at polar angle thetaDeg (> 90 is below the surface) and azimuth phiDeg.
+inline Vector3f direction(double thetaDeg, double phiDeg = 0) {
+  double t = thetaDeg * M_PI / 180, p = phiDeg * M_PI / 180;
+  return Vector3f(Float(std::sin(t) * std::cos(p)), Float(std::sin(t) * std::sin(p)),
+                  Float(std::cos(t)));
+}
+
+// Concatenation through a stream (GCC 12 warns falsely on chains of string operator+).
+template <typename... Args>
+std::string cat(const Args&... args) {
+  std::ostringstream s;
+  (s << ... << args);
+  return s.str();
+}
+
+// A BxDF with the arena that owns it and its parts, and the outgoing direction to test.
+struct BxDFCase {
+  std::string name;
+  std::shared_ptr<MemoryArena> arena;
+  const BxDF* bxdf = nullptr;
+  Vector3f wo;
+  bool isBRDF = true;
+};
+
+// A smooth synthetic MERL-layout table: a diffuse base and a lobe in theta_h, tinted per channel.
+inline const MerlBrdfTable& syntheticMerlTable() {
+  static const MerlBrdfTable table = [] {
+    const int nh = 30, nd = 30, np = 60;
+    size_t n = size_t(nh) * nd * np;
+    std::vector<double> rgb(3 * n);
+    for (int ih = 0; ih < nh; ++ih)
+      for (int id = 0; id < nd; ++id)
+        for (int ip = 0; ip < np; ++ip) {
+          double u = (ih + 0.5) / nh, thetaH = u * u * M_PI / 2;
+          double thetaD = (id + 0.5) / nd * M_PI / 2;
+          double lobe = 2 * std::pow(std::cos(thetaH), 40) * (1 + 0.3 * std::sin(thetaD));
+          size_t i = (size_t(ih) * nd + id) * np + ip;
+          for (int c = 0; c < 3; ++c) rgb[c * n + i] = (0.05 + 0.05 * c) + lobe;
+        }
+    return MerlBrdfTable(nh, nd, np, rgb);
+  }();
+  return table;
+}
+
+// Scattered samples of a Lambertian-plus-Phong BRDF, like a measured data set.
+inline const IrregularBrdfTable& syntheticIrregularTable() {
+  static const IrregularBrdfTable table = [] {
+    std::vector<IrregularBrdfSample> samples;
+    RNG rng(77);
+    for (int i = 0; i < 1000; ++i) {
+      auto dir = [&] {
+        Float z = rng.uniformFloat(), phi = 2 * kPi * rng.uniformFloat();
+        Float s = std::sqrt(1 - z * z);
+        return Vector3f(s * std::cos(phi), s * std::sin(phi), z);
+      };
+      Vector3f wi = dir(), wo = dir();
+      Float c = std::max(Float(0), dot(reflectAboutNormal(wo), wi));
+      Float v = 0.1f + 3 * std::pow(c, 20);
+      samples.push_back({wi, wo, Spectrum(v, 0.8f * v, 0.6f * v)});
+    }
+    return IrregularBrdfTable(std::move(samples));
+  }();
+  return table;
+}
+
+// Builds one case; make() receives the case's arena.
+inline BxDFCase makeCase(std::string name, const Vector3f& wo,
+                         const std::function<const BxDF*(MemoryArena&)>& make) {
+  BxDFCase c;
+  c.name = std::move(name);
+  c.arena = std::make_shared<MemoryArena>();
+  c.bxdf = make(*c.arena);
+  c.wo = wo;
+  c.isBRDF = (c.bxdf->type() & kReflection) != 0;
+  return c;
+}
+
+inline const BxDF* blinnMicrofacet(MemoryArena& a, Float exponent, const Fresnel* fr = nullptr) {
+  if (!fr) fr = a.make<FresnelNoOp>();
+  return a.make<MicrofacetReflection>(Spectrum(1), fr, a.make<BlinnDistribution>(exponent));
+}
+inline const BxDF* anisoMicrofacet(MemoryArena& a, Float ex, Float ey) {
+  return a.make<MicrofacetReflection>(Spectrum(1), a.make<FresnelNoOp>(),
+                                      a.make<AnisotropicDistribution>(ex, ey));
+}
+inline const BxDF* phongLafortune(MemoryArena& a, Float exponent) {
+  auto* lobe = a.make<LafortuneLobe>(
+      LafortuneLobe{Spectrum(-1), Spectrum(-1), Spectrum(1), Spectrum(exponent)});
+  return a.make<Lafortune>(Spectrum(0.2f), std::span<const LafortuneLobe>(lobe, 1));
+}
+inline const BxDF* clay(MemoryArena& a) {
+  LafortuneFit fit = *lafortuneFit("clay");
+  return a.make<Lafortune>(fit.diffuse, fit.lobes);
+}
+
+// Sampled (non-delta) BxDFs for the chi-square test. full = the Long sweep.
+inline std::vector<BxDFCase> sampledCases(bool full) {
+  std::vector<BxDFCase> cases;
+  auto add = [&](std::string name, const Vector3f& wo,
+                 const std::function<const BxDF*(MemoryArena&)>& make) {
+    cases.push_back(makeCase(std::move(name), wo, make));
+  };
+  if (!full) {
+    add("Lambertian_30", direction(30),
+        [](MemoryArena& a) { return a.make<LambertianReflection>(Spectrum(0.5f)); });
+    add("Lambertian_below_150", direction(150, 40),
+        [](MemoryArena& a) { return a.make<LambertianReflection>(Spectrum(0.5f)); });
+    add("OrenNayar_s30_60", direction(60, 10),
+        [](MemoryArena& a) { return a.make<OrenNayar>(Spectrum(0.5f), 30); });
+    add("Blinn_e1_0", direction(0), [](MemoryArena& a) { return blinnMicrofacet(a, 1); });
+    add("Blinn_e10_45", direction(45, 20), [](MemoryArena& a) { return blinnMicrofacet(a, 10); });
+    add("Blinn_e1000_89p9", direction(89.9, 70),
+        [](MemoryArena& a) { return blinnMicrofacet(a, 1000); });
+    add("Blinn_e100_inside_110", direction(110, 200), [](MemoryArena& a) {
+      return blinnMicrofacet(a, 100, a.make<FresnelDielectric>(1.f, 1.5f));
+    });
+    add("Aniso_10_100_30", direction(30, 30),
+        [](MemoryArena& a) { return anisoMicrofacet(a, 10, 100); });
+    add("Aniso_1000_1_80", direction(80, 60),
+        [](MemoryArena& a) { return anisoMicrofacet(a, 1000, 1); });
+    add("Aniso_1_1_0", direction(0), [](MemoryArena& a) { return anisoMicrofacet(a, 1, 1); });
+    add("FresnelBlend_Blinn20_45", direction(45), [](MemoryArena& a) {
+      return a.make<FresnelBlend>(Spectrum(0.5f), Spectrum(0.04f), a.make<BlinnDistribution>(20));
+    });
+    add("FresnelBlend_Aniso5_50_75", direction(75, 10), [](MemoryArena& a) {
+      return a.make<FresnelBlend>(Spectrum(0.5f), Spectrum(0.2f),
+                                  a.make<AnisotropicDistribution>(5, 50));
+    });
+    add("Clay_30", direction(30), [](MemoryArena& a) { return clay(a); });
+    add("Clay_80", direction(80, 45), [](MemoryArena& a) { return clay(a); });
+    add("Phong50_60", direction(60, 120), [](MemoryArena& a) { return phongLafortune(a, 50); });
+    add("BTDF_Blinn30_40", direction(40),
+        [](MemoryArena& a) { return a.make<BRDFToBTDF>(blinnMicrofacet(a, 30)); });
+    add("BTDF_Lambertian_below_120", direction(120), [](MemoryArena& a) {
+      return a.make<BRDFToBTDF>(a.make<LambertianReflection>(Spectrum(0.5f)));
+    });
+    add("MERL_synthetic_50", direction(50, 30),
+        [](MemoryArena& a) { return a.make<MeasuredBRDF>(&syntheticMerlTable()); });
+    add("Irregular_synthetic_20", direction(20),
+        [](MemoryArena& a) { return a.make<IrregularMeasuredBRDF>(&syntheticIrregularTable()); });
+    return cases;
+  }
+  // The sweep: incident angles from the normal to 89.9 degrees, above and (for the microfacet
+  // models, also with a dielectric seen from inside) below the surface.
+  const double thetas[] = {0, 10, 30, 50, 70, 85, 89.9};
+  const Float roughness[] = {1e-3f, 1e-2f, 0.1f, 0.3f, 1};
+  for (double t : thetas) {
+    std::string ts = std::to_string(int(t * 10));
+    add(cat("Lambertian_", ts), direction(t),
+        [](MemoryArena& a) { return a.make<LambertianReflection>(Spectrum(0.5f)); });
+    add(cat("OrenNayar_", ts), direction(180 - t, 33),
+        [](MemoryArena& a) { return a.make<OrenNayar>(Spectrum(0.5f), 20); });
+    add(cat("Clay_", ts), direction(t, 15), [](MemoryArena& a) { return clay(a); });
+    add(cat("MERL_", ts), direction(t, 5),
+        [](MemoryArena& a) { return a.make<MeasuredBRDF>(&syntheticMerlTable()); });
+    for (Float r : roughness) {
+      std::string rs = cat("r", int(std::round(-std::log10(r) * 10)));
+      add(cat("Blinn_", rs, "_", ts), direction(t, 25),
+          [r](MemoryArena& a) { return blinnMicrofacet(a, 1 / r); });
+      add(cat("Blinn_inside_", rs, "_", ts), direction(180 - t, 25), [r](MemoryArena& a) {
+        return blinnMicrofacet(a, 1 / r, a.make<FresnelDielectric>(1.f, 1.5f));
+      });
+      add(cat("Aniso_", rs, "_", ts), direction(t, 35),
+          [r](MemoryArena& a) { return anisoMicrofacet(a, 1 / r, 0.1f / r); });
+      add(cat("FresnelBlend_", rs, "_", ts), direction(t, 50), [r](MemoryArena& a) {
+        return a.make<FresnelBlend>(Spectrum(0.5f), Spectrum(0.05f),
+                                    a.make<AnisotropicDistribution>(1 / r, 0.3f / r));
+      });
+      add(cat("BTDF_Blinn_", rs, "_", ts), direction(180 - t, 80),
+          [r](MemoryArena& a) { return a.make<BRDFToBTDF>(blinnMicrofacet(a, 1 / r)); });
+    }
+  }
+  add("Blinn_e10000_30", direction(30), [](MemoryArena& a) { return blinnMicrofacet(a, 1e4f); });
+  return cases;
+}
+
+}  // namespace candela::testcases
