@@ -3,6 +3,12 @@
 #include <filesystem>
 
 #include "scene/plugin_factories.h"
+#include "shapes/cone.h"
+#include "shapes/cylinder.h"
+#include "shapes/disk.h"
+#include "shapes/heightfield.h"
+#include "shapes/hyperboloid.h"
+#include "shapes/paraboloid.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
 
@@ -14,8 +20,19 @@ CreatedShapes::CreatedShapes(CreatedShapes&&) noexcept = default;
 
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld) {
   CreatedShapes out;
-  if (desc.name == "sphere") {
-    out.shapes.push_back(createSphereShape(objectToWorld, desc.reverseOrientation, desc.params));
+  using QuadricFactory = std::unique_ptr<Shape> (*)(const Transform&, bool, const ParamSet&);
+  QuadricFactory quadric = nullptr;
+  if (desc.name == "sphere") quadric = createSphereShape;
+  if (desc.name == "cylinder") quadric = createCylinderShape;
+  if (desc.name == "disk") quadric = createDiskShape;
+  if (desc.name == "cone") quadric = createConeShape;
+  if (desc.name == "paraboloid") quadric = createParaboloidShape;
+  if (desc.name == "hyperboloid") quadric = createHyperboloidShape;
+  if (quadric) {
+    out.shapes.push_back(quadric(objectToWorld, desc.reverseOrientation, desc.params));
+  } else if (desc.name == "heightfield") {
+    out.shapes = createHeightfieldShapes(objectToWorld, desc.reverseOrientation, desc.params,
+                                         &out.mesh, desc.loc);
   } else if (desc.name == "trianglemesh") {
     out.shapes = createTriangleMeshShapes(objectToWorld, desc.reverseOrientation, desc.params,
                                           &out.mesh, desc.loc);
@@ -24,7 +41,9 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
     out.shapes = createPlyMeshShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh,
                                      desc.loc, dir);
   } else {
-    throwUnknownPlugin(desc.loc, "shape", desc.name, {"sphere", "trianglemesh", "plymesh"});
+    throwUnknownPlugin(desc.loc, "shape", desc.name,
+                       {"sphere", "cylinder", "disk", "cone", "paraboloid", "hyperboloid",
+                        "heightfield", "trianglemesh", "plymesh"});
   }
   return out;
 }
