@@ -95,27 +95,30 @@ Matrix4x4 compose(const TransformComponents& c) {
 
 AnimatedTransform::AnimatedTransform(const Transform& start, Float startTime, const Transform& end,
                                      Float endTime)
-    : start_(start), end_(end), startTime_(startTime), endTime_(endTime) {
-  animated_ = start != end;
-  if (!animated_) return;
-  keys_[0] = decompose(start.matrix());
-  keys_[1] = decompose(end.matrix());
+    : start_(start), startTime_(startTime), endTime_(endTime) {
+  if (start == end) return;
+  auto m = std::make_shared<Motion>();
+  m->end = end;
+  m->keys[0] = decompose(start.matrix());
+  m->keys[1] = decompose(end.matrix());
   // q and -q are the same rotation; of the two arcs between the keys take the shorter one.
-  if (dot(keys_[0].rotation, keys_[1].rotation) < 0) keys_[1].rotation = -keys_[1].rotation;
-  rotationAngle_ = 2 * angleBetween(keys_[0].rotation, keys_[1].rotation);
+  if (dot(m->keys[0].rotation, m->keys[1].rotation) < 0) m->keys[1].rotation = -m->keys[1].rotation;
+  m->rotationAngle = 2 * angleBetween(m->keys[0].rotation, m->keys[1].rotation);
+  motion_ = std::move(m);
 }
 
 Transform AnimatedTransform::interpolate(Float time) const {
-  if (!animated_ || time <= startTime_) return start_;
-  if (time >= endTime_) return end_;
+  if (!motion_ || time <= startTime_) return start_;
+  if (time >= endTime_) return motion_->end;
+  const TransformComponents* keys = motion_->keys;
   double s = (double(time) - startTime_) / (double(endTime_) - startTime_);
   TransformComponents c;
   for (int i = 0; i < 3; ++i)
-    c.translation[i] = (1 - s) * keys_[0].translation[i] + s * keys_[1].translation[i];
-  c.rotation = slerp(s, keys_[0].rotation, keys_[1].rotation);
+    c.translation[i] = (1 - s) * keys[0].translation[i] + s * keys[1].translation[i];
+  c.rotation = slerp(s, keys[0].rotation, keys[1].rotation);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      c.stretch[i][j] = (1 - s) * keys_[0].stretch[i][j] + s * keys_[1].stretch[i][j];
+      c.stretch[i][j] = (1 - s) * keys[0].stretch[i][j] + s * keys[1].stretch[i][j];
   Matrix4x4 m = compose(c);
   Matrix4x4 mInv;
   if (!inverse(m, &mInv))
@@ -135,23 +138,24 @@ Transform AnimatedTransform::interpolate(Float time) const {
 // both norms are largest at a corner of b. Pure translation and scaling need no padding at all.
 Bounds3f AnimatedTransform::motionBounds(const Bounds3f& b) const {
   if (b.empty()) return b;
-  if (!animated_) return start_(b);
+  if (!motion_) return start_(b);
+  const TransformComponents* keys = motion_->keys;
   constexpr int kSteps = 64;
-  Bounds3f result = unionOf(start_(b), end_(b));
+  Bounds3f result = unionOf(start_(b), motion_->end(b));
   Float t0 = startTime_, t1 = endTime_;
   for (int k = 1; k < kSteps; ++k)
     result = unionOf(result, interpolate(lerp(Float(k) / kSteps, t0, t1))(b));
 
   double dS[3][3];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) dS[i][j] = keys_[1].stretch[i][j] - keys_[0].stretch[i][j];
+    for (int j = 0; j < 3; ++j) dS[i][j] = keys[1].stretch[i][j] - keys[0].stretch[i][j];
   double maxS = 0, maxDS = 0;
   for (int c = 0; c < 8; ++c) {
     Point3f p = b.corner(c);
-    maxS = std::max({maxS, applyLength(keys_[0].stretch, p), applyLength(keys_[1].stretch, p)});
+    maxS = std::max({maxS, applyLength(keys[0].stretch, p), applyLength(keys[1].stretch, p)});
     maxDS = std::max(maxDS, applyLength(dS, p));
   }
-  double w = rotationAngle_;
+  double w = motion_->rotationAngle;
   double h = 1.0 / kSteps;
   double curvePad = h * h / 8 * (w * w * maxS + 2 * w * maxDS);
   // Rounding: matrices rounded to float and corners transformed in float, a few ulps of the

@@ -4,6 +4,8 @@
 // matrices entry by entry instead would shrink a rotating object half way through a turn.
 #pragma once
 
+#include <memory>
+
 #include "core/quaternion.h"
 #include "core/transform.h"
 
@@ -25,12 +27,12 @@ Matrix4x4 compose(const TransformComponents& c);
 class AnimatedTransform {
  public:
   AnimatedTransform() = default;
-  explicit AnimatedTransform(const Transform& t) : start_(t), end_(t) {}
+  explicit AnimatedTransform(const Transform& t) : start_(t) {}
   // Animated when start != end; startTime <= endTime.
   AnimatedTransform(const Transform& start, Float startTime, const Transform& end, Float endTime);
-  bool isAnimated() const { return animated_; }
+  bool isAnimated() const { return motion_ != nullptr; }
   const Transform& start() const { return start_; }
-  const Transform& end() const { return end_; }
+  const Transform& end() const { return motion_ ? motion_->end : start_; }
   Float startTime() const { return startTime_; }
   Float endTime() const { return endTime_; }
   // The transform at time t, clamped to [startTime, endTime]: exactly start() at or before
@@ -42,11 +44,16 @@ class AnimatedTransform {
   Bounds3f motionBounds(const Bounds3f& b) const;
 
  private:
-  Transform start_, end_;
+  // Only animated transforms carry the end key and the decomposition; it never changes once
+  // made, so copies share it. A static transform (most instances) is just start_.
+  struct Motion {
+    Transform end;
+    TransformComponents keys[2];  // the decomposed start and end
+    double rotationAngle = 0;     // total angle the rotation turns through over the interval
+  };
+  Transform start_;
   Float startTime_ = 0, endTime_ = 1;
-  bool animated_ = false;
-  TransformComponents keys_[2];  // the decomposed start_ and end_ (when animated)
-  double rotationAngle_ = 0;     // total angle the rotation turns through over the interval
+  std::shared_ptr<const Motion> motion_;
 };
 
 }  // namespace candela
