@@ -22,7 +22,8 @@ struct CliOptions {
   bool quick = false, quiet = false, verbose = false, stats = false;
   std::string accelerator;  // overrides the scene's Accelerator; "" = the scene's (embree)
   bool half = false;
-  std::string compression = "zip";
+  std::string compression;  // "" = the Film's "compression" (default zip)
+  std::string aovs;         // "albedo,normal,..." added to the Film's "aovs"
   std::string ocioConfig, display = "sRGB", view = "Standard";
   // Error against run time: render in doubling passes, measure after each.
   std::string reference;   // EXR to compare with

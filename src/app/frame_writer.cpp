@@ -36,8 +36,8 @@ fs::path framePath(fs::path p, int frameIndex) {
 }  // namespace
 
 void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
-                        const RenderResult& result, int frameIndex,
-                        const ImageMetadata& extra) const {
+                        const RenderResult& result, int frameIndex, const ImageMetadata& extra,
+                        ExrOptions exr) const {
   fs::path exrPath = cli_.outfile.empty() ? fs::path(film.filename()) : fs::path(cli_.outfile);
   if (exrPath.extension() != ".exr") {
     fs::path original = exrPath;
@@ -66,9 +66,6 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   meta.floats.insert(meta.floats.end(), extra.floats.begin(), extra.floats.end());
   meta.ints.insert(meta.ints.end(), extra.ints.begin(), extra.ints.end());
 
-  ExrOptions exr;
-  exr.half = cli_.half;
-  exr.compression = cli_.compression;
   exr.colorSpace = colorManagement_->sceneLinearName();
   // Resolved through the config, so a custom config's scene-linear space still gets its primaries.
   exr.chromaticities = colorManagement_->chromaticities(exr.colorSpace);

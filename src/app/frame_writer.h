@@ -5,6 +5,7 @@
 
 #include "app/cli_options.h"
 #include "film/film.h"
+#include "film/output/image_output.h"
 #include "renderers/sampler_renderer.h"
 #include "scene/scene_description.h"
 
@@ -19,7 +20,7 @@ class FrameWriter {
   ~FrameWriter();
   // extra: metadata of the caller's to add (stop conditions, error).
   void write(const Film& film, const SceneDescription& desc, int spp, const RenderResult& result,
-             int frameIndex, const ImageMetadata& extra = {}) const;
+             int frameIndex, const ImageMetadata& extra, ExrOptions exr) const;
 
  private:
   const CliOptions& cli_;

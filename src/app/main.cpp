@@ -71,6 +71,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.cropWindow = cli.cropWindow;
   build.quick = cli.quick;
   build.accelerator = cli.accelerator;
+  build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
   if (!cli.quiet) build.warn = printWarning;
   RenderJob job = buildRenderJob(desc, build, device);
   if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
@@ -104,7 +105,10 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
       std::fprintf(stderr, "warning: %llu samples had NaN or infinite radiance and were dropped\n",
                    (unsigned long long)result.nonFiniteSamples);
   }
-  writer.write(*job.film, desc, spp, result, frameIndex, extra);
+  ExrOptions exr;
+  exr.compression = cli.compression.empty() ? job.exrCompression : cli.compression;
+  exr.half = cli.half || job.exrHalf;
+  writer.write(*job.film, desc, spp, result, frameIndex, extra, exr);
 }
 
 }  // namespace

@@ -54,6 +54,27 @@ void Film::addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float
   ++px.count;
 }
 
+// The AOV channels of one pixel, in aovChannelNames order.
+void Film::writeAovs(const Point2i& p, float* out) const {
+  const AovPixel* a = aovPixels_.empty() ? nullptr : &aovPixels_[offset(p)];
+  double inv = (a && a->hitWeight != 0) ? 1 / a->hitWeight : 0;
+  if (aovFlags_ & kAovAlbedo)
+    for (int c = 0; c < 3; ++c) *out++ = float(a->albedo[c] * inv);
+  if (aovFlags_ & kAovNormal) {
+    Vector3f n(Float(a->normal[0]), Float(a->normal[1]), Float(a->normal[2]));
+    if (n.lengthSquared() > 0) n = normalize(n);
+    *out++ = n.x, *out++ = n.y, *out++ = n.z;
+  }
+  if (aovFlags_ & kAovDepth) *out++ = a->depth;
+  if (aovFlags_ & kAovPosition)
+    for (int c = 0; c < 3; ++c) *out++ = float(a->position[c] * inv);
+  if (aovFlags_ & kAovVariance) {
+    Spectrum v = pixelVariance(p);
+    for (int c = 0; c < 3; ++c) *out++ = v[c];
+  }
+  if (aovFlags_ & kAovSamples) *out++ = float(pixelSampleCount(p));
+}
+
 Spectrum Film::pixelVariance(const Point2i& pixel) const {
   if (!pixelBounds_.inside(pixel)) return Spectrum(0);
   const Pixel& px = at(pixel);
@@ -91,10 +112,31 @@ Float Film::pixelAlpha(const Point2i& pixel) const {
   return px.weightSum == 0 ? Float(0) : Float(px.alphaSum / px.weightSum);
 }
 
+void Film::enableAovs(unsigned flags) {
+  aovFlags_ = flags;
+  if (flags & kAovGeometric) aovPixels_.assign(pixels_.size(), AovPixel());
+}
+
+void Film::addAovSample(const Point2i& pixel, const AovSample& s, Float weight) {
+  if (!pixelBounds_.inside(pixel) || aovPixels_.empty() || !s.hit) return;
+  AovPixel& a = aovPixels_[offset(pixel)];
+  double w = weight;
+  for (int c = 0; c < 3; ++c) {
+    a.albedo[c] += w * s.albedo[c];
+    a.normal[c] += w * s.normal[c];
+    a.position[c] += w * s.position[c];
+  }
+  a.hitWeight += w;
+  a.depth = std::min(a.depth, s.depth);
+}
+
 ImageBuffer Film::image() const {
   int width = std::max(0, pixelBounds_.pMax.x - pixelBounds_.pMin.x);
   int height = std::max(0, pixelBounds_.pMax.y - pixelBounds_.pMin.y);
-  ImageBuffer img(width, height, {"R", "G", "B", "A"});
+  std::vector<std::string> channels = {"R", "G", "B", "A"};
+  std::vector<std::string> extra = aovChannelNames(aovFlags_);
+  channels.insert(channels.end(), extra.begin(), extra.end());
+  ImageBuffer img(width, height, channels);
   img.xOffset = pixelBounds_.pMin.x;
   img.yOffset = pixelBounds_.pMin.y;
   img.fullWidth = fullResolution_.x;
@@ -105,6 +147,7 @@ ImageBuffer Film::image() const {
       Spectrum L = pixelValue(p);
       for (int c = 0; c < 3; ++c) img.at(x, y, c) = L[c];
       img.at(x, y, 3) = pixelAlpha(p);
+      if (aovFlags_) writeAovs(p, &img.at(x, y, 4));
     }
   return img;
 }

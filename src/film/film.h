@@ -9,6 +9,7 @@
 
 #include "core/bounds.h"
 #include "core/spectrum.h"
+#include "film/aov.h"
 #include "film/image_buffer.h"
 #include "filters/filter.h"
 
@@ -27,6 +28,12 @@ class Film {
   const std::string& filename() const { return filename_; }
   const Bounds2f& cropWindow() const { return cropWindow_; }
 
+  // Extra layers to write (AovFlag bits); allocates their storage.
+  void enableAovs(unsigned flags);
+  unsigned aovs() const { return aovFlags_; }
+  // The first-hit AOVs of one sample (only when kAovGeometric bits are enabled).
+  void addAovSample(const Point2i& pixel, const AovSample& s, Float weight);
+
   // weight is the filter sample's weight; alpha 1 where a surface was hit.
   void addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);
   // Weighted mean radiance of a pixel (black if it has no samples).
@@ -36,7 +43,7 @@ class Film {
   // per channel; 0 with fewer than two samples.
   Spectrum pixelVariance(const Point2i& pixel) const;
   long pixelSampleCount(const Point2i& pixel) const;
-  // R, G, B, A of the pixel bounds, top row first.
+  // R, G, B, A and the enabled AOV channels of the pixel bounds, top row first.
   ImageBuffer image() const;
 
  private:
@@ -50,6 +57,7 @@ class Film {
     double w2Sum = 0;
     long count = 0;
   };
+  void writeAovs(const Point2i& p, float* out) const;
   size_t offset(const Point2i& p) const;  // p must be inside pixelBounds_
   Pixel& at(const Point2i& p) { return pixels_[offset(p)]; }
   const Pixel& at(const Point2i& p) const { return pixels_[offset(p)]; }
@@ -60,6 +68,16 @@ class Film {
   std::unique_ptr<Filter> filter_;
   std::string filename_;
   std::vector<Pixel> pixels_;
+  // Per-pixel first-hit sums, allocated only when such AOVs are enabled.
+  struct AovPixel {
+    double albedo[3] = {0, 0, 0};
+    double normal[3] = {0, 0, 0};
+    double position[3] = {0, 0, 0};
+    double hitWeight = 0;
+    Float depth = kInfinity;  // the nearest, as the lrt draft's film keeps it
+  };
+  unsigned aovFlags_ = 0;
+  std::vector<AovPixel> aovPixels_;
 };
 
 // The film named by a Film statement ("image"), with pbrt-v2's parameters: xresolution 640,

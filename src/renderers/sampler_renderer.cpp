@@ -9,6 +9,7 @@
 
 #include "accel/embree/embree_device.h"
 #include "core/progress.h"
+#include "renderers/aov_sampler.h"
 
 namespace candela {
 
@@ -58,6 +59,9 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
           ++c.rays.cameraRays;
           Spectrum l(0);
           Float alpha = 0;
+          // Before Li, which may shorten the camera ray's tMax.
+          if (rayWeight > 0 && (film.aovs() & kAovGeometric))
+            film.addAovSample(pixel, sampleAovs(scene, ray, arena, c.rays), cs.filterWeight);
           if (rayWeight > 0) l = integrator_.Li(ray, scene, ctx, &alpha) * rayWeight;
           if (!l.isFinite()) {
             ++c.nonFinite;
