@@ -1,35 +1,98 @@
 // Creates the textures that materials name, once each and only when used (DESIGN.md, data flow
 // step 2), and turns a material parameter into a texture: a "texture" reference or a constant.
+//
+// Texture classes (pbrt-v2's names, parameters and defaults; src/textures/ documents each):
+// constant, scale, mix, bilerp, uv, checkerboard, dots, fbm, wrinkled, windy, marble, imagemap.
+// A texture's own parameters (tex1, tex2, amount, inside, outside) may name other textures; as
+// in pbrt, where textures are made at their statement, such a name means the latest definition
+// *before* the referring texture, so references can never form a cycle. Materials see the last
+// definition of each name.
+//
+// Image textures read their files through the ImageLoader (candela_io's loadTextureImage in the
+// renderer: OpenImageIO + OpenColorIO), one load per (path, colour space) however many textures
+// use it, and one MIP map per (path, colour space, wrap, scale, gamma, float/spectrum). Relative
+// filenames resolve against the directory of the scene file holding the Texture statement. A
+// missing or unreadable file is an error naming the path (pbrt-v2 warned and used a constant);
+// an image texture no material uses is never loaded.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
 #include <vector>
 
+#include "film/image_buffer.h"
 #include "scene/scene_description.h"
+#include "textures/mipmap.h"
 #include "textures/texture.h"
 
 namespace candela {
 
 class TextureFactory {
  public:
-  explicit TextureFactory(const std::vector<TextureDesc>& descs) : descs_(descs) {}
+  // Reads the image at path converted to scene_linear from colorSpace ("": the default rule,
+  // sRGB for integer pixels and scene_linear for float pixels). Throws naming the path.
+  using ImageLoader =
+      std::function<ImageBuffer(const std::string& path, const std::string& colorSpace)>;
+  using Warn = std::function<void(const FileLoc&, const std::string&)>;
+
+  explicit TextureFactory(const std::vector<TextureDesc>& descs, ImageLoader loadImage = {},
+                          Warn warn = {});
+  ~TextureFactory();
+  TextureFactory(const TextureFactory&) = delete;
+  TextureFactory& operator=(const TextureFactory&) = delete;
+
   // The parameter `name` as a texture: the named texture when the item is a "texture" reference,
-  // else a constant of the given value (or def when absent).
+  // else a constant of the given value (or def when absent). Throws SceneError for a missing
+  // texture, one of the other type, an unknown class or bad parameters.
   const Texture<Spectrum>* spectrum(const ParamSet& params, const std::string& name,
                                     const Spectrum& def, const FileLoc& loc);
   const Texture<Float>* scalar(const ParamSet& params, const std::string& name, Float def,
                                const FileLoc& loc);
-  int texturesCreated() const { return created_; }
+
+  int texturesCreated() const { return created_; }  // named textures (not inline constants)
+  int imagesLoaded() const { return imagesLoaded_; }
+  int mipmapsBuilt() const { return mipmapsBuilt_; }
+  // Frees the decoded images kept to build further MIP maps from; call once every material is
+  // made (a later image texture would read its file again).
+  void releaseImages() { images_.clear(); }
 
  private:
-  const TextureDesc* find(const std::string& textureName, const std::string& type) const;
+  using MipKey = std::tuple<std::string, std::string, WrapMode, Float, Float>;
+  template <typename T>
+  struct Store {
+    std::map<size_t, const Texture<T>*> byIndex;  // named textures by their TextureDesc
+    std::vector<std::unique_ptr<Texture<T>>> owned;
+    std::map<MipKey, std::shared_ptr<const MIPMap<T>>> mipmaps;
+  };
+  template <typename T>
+  Store<T>& store();
+
+  // Textures may only name textures defined before index `visible` (see above).
+  template <typename T>
+  const Texture<T>* parameter(const ParamSet& params, const std::string& name, const T& def,
+                              const FileLoc& loc, size_t visible);
+  template <typename T>
+  const Texture<T>* named(size_t index);
+  template <typename T>
+  std::unique_ptr<Texture<T>> create(const TextureDesc& d, size_t index);
+  template <typename T>
+  std::unique_ptr<Texture<T>> createImageTexture(const TextureDesc& d);
+  std::optional<size_t> find(const std::string& textureName, const std::string& type,
+                             size_t visible) const;
+  const ImageBuffer& image(const std::string& path, const std::string& colorSpace,
+                           const TextureDesc& d);
+
   const std::vector<TextureDesc>& descs_;
-  std::map<std::string, const Texture<Spectrum>*> spectrumByName_;
-  std::map<std::string, const Texture<Float>*> floatByName_;
-  std::vector<std::unique_ptr<Texture<Spectrum>>> spectrumOwned_;
-  std::vector<std::unique_ptr<Texture<Float>>> floatOwned_;
-  int created_ = 0;
+  ImageLoader loadImage_;
+  Warn warn_;
+  Store<Spectrum> spectra_;
+  Store<Float> floats_;
+  std::map<std::pair<std::string, std::string>, ImageBuffer> images_;
+  int created_ = 0, imagesLoaded_ = 0, mipmapsBuilt_ = 0;
 };
 
 }  // namespace candela
