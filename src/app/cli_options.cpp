@@ -39,7 +39,13 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
       ->check(CLI::IsMember(
           {"zip", "zips", "piz", "dwaa", "dwab", "rle", "pxr24", "b44", "b44a", "none"}));
   app.add_option("--ocio", o->ocioConfig, "OpenColorIO config (default: $OCIO, then candela's)");
+  app.add_option("--colorspace", o->colorSpace,
+                 "Working and output colour space, e.g. acescg (default: scene_linear); input "
+                 "colours are converted once at load");
   app.add_option("--display", o->display, "OCIO display for the preview");
+  app.add_option("--tonemap", o->toneMap,
+                 "Tone map the preview (never the EXR): maxwhite, contrast, highcontrast, "
+                 "nonlinear");
   app.add_option("--view", o->view, "OCIO view for the preview");
   app.add_option("--reference", o->reference,
                  "Reference EXR: report the error against it after each pass")

@@ -25,6 +25,8 @@ struct CliOptions {
   std::string compression;  // "" = the Film's "compression" (default zip)
   std::string aovs;         // "albedo,normal,..." added to the Film's "aovs"
   std::string ocioConfig, display = "sRGB", view = "Standard";
+  std::string colorSpace;  // working and output space ("" = the config's scene_linear)
+  std::string toneMap;     // preview tone map, overriding the scene's ToneMap statement
   // Error against run time: render in doubling passes, measure after each.
   std::string reference;   // EXR to compare with
   std::string errorLog;    // CSV: seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95

@@ -5,13 +5,31 @@
 #include <filesystem>
 
 #include "film/output/image_output.h"
+#include "film/tonemap/tone_map.h"
 
 namespace candela {
 
 namespace fs = std::filesystem;
 
 FrameWriter::FrameWriter(const CliOptions& cli)
-    : cli_(cli), colorManagement_(std::make_unique<ColorManagement>(cli.ocioConfig)) {}
+    : cli_(cli), colorManagement_(std::make_unique<ColorManagement>(cli.ocioConfig)) {
+  sceneLinear_ = colorManagement_->sceneLinearName();
+  workingSpace_ =
+      cli.colorSpace.empty() ? sceneLinear_ : colorManagement_->canonicalName(cli.colorSpace);
+}
+
+std::optional<std::array<Float, 9>> FrameWriter::workingSpaceMatrix() const {
+  if (workingSpace_ == sceneLinear_) return std::nullopt;
+  // A linear space to a linear space is a 3x3 matrix: its columns are the images of the
+  // scene-linear primaries.
+  ImageBuffer basis(3, 1, {"R", "G", "B"});
+  for (int i = 0; i < 3; ++i) basis.at(i, 0, i) = 1;
+  colorManagement_->convert(basis, sceneLinear_, workingSpace_);
+  std::array<Float, 9> m;
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) m[3 * row + col] = basis.at(col, 0, row);
+  return m;
+}
 
 FrameWriter::~FrameWriter() = default;
 
@@ -66,7 +84,7 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   meta.floats.insert(meta.floats.end(), extra.floats.begin(), extra.floats.end());
   meta.ints.insert(meta.ints.end(), extra.ints.begin(), extra.ints.end());
 
-  exr.colorSpace = colorManagement_->sceneLinearName();
+  exr.colorSpace = workingSpace_;
   // Resolved through the config, so a custom config's scene-linear space still gets its primaries.
   exr.chromaticities = colorManagement_->chromaticities(exr.colorSpace);
   writeExr(exrPath.string(), image, meta, exr);
@@ -75,6 +93,10 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   if (cli_.preview == "none") return;
   fs::path previewPath = cli_.preview.empty() ? fs::path(exrPath).replace_extension(".png")
                                               : framePath(cli_.preview, frameIndex);
+  if (workingSpace_ != sceneLinear_) colorManagement_->convert(image, workingSpace_, sceneLinear_);
+  // lrt's tone maps act on the preview only; the EXR above keeps the scene-linear data.
+  const std::string toneMap = cli_.toneMap.empty() ? desc.toneMap.name : cli_.toneMap;
+  if (!toneMap.empty()) applyToneMap(image, toneMap, desc.toneMap.params, desc.toneMap.loc);
   writePreview(previewPath.string(), image, *colorManagement_, cli_.display, cli_.view);
   if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", previewPath.string().c_str());
 }

@@ -10,6 +10,7 @@
 #include "app/frame_writer.h"
 #include "film/error_metrics.h"
 #include "film/output/image_output.h"
+#include "film/output/texture_loader.h"
 #include "renderers/progressive_render.h"
 #include "renderers/sampler_renderer.h"
 #include "scene/parser.h"
@@ -72,6 +73,10 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.quick = cli.quick;
   build.accelerator = cli.accelerator;
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
+  build.colorMatrix = writer.workingSpaceMatrix();
+  build.loadImage = [&writer](const std::string& path, const std::string& colorSpace) {
+    return loadTextureImage(path, colorSpace, writer.colorManagement(), writer.workingSpace());
+  };
   if (!cli.quiet) build.warn = printWarning;
   RenderJob job = buildRenderJob(desc, build, device);
   if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
