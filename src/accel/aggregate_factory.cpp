@@ -97,11 +97,7 @@ std::unique_ptr<Aggregate> createAggregate(const std::string& nameIn, const Para
     readGridParams(params);
     return std::make_unique<GridAggregate>(geometry);
   }
-  // TODO(embree instancing): EmbreeAggregate is getting a SceneGeometry constructor; until then
-  // it takes the static primitives, and scenes with instances need a reference aggregate.
-  if (!geometry.instances.empty())
-    fail(loc, "the embree aggregate does not take object instances yet; use --accel bvh");
-  return std::make_unique<EmbreeAggregate>(device, geometry.primitives);
+  return std::make_unique<EmbreeAggregate>(device, geometry);
 }
 
 std::unique_ptr<Aggregate> createAggregate(const std::string& nameIn, const ParamSet& params,

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "accel/ray_query.h"
+#include "core/interaction_transform.h"
 
 namespace candela {
 
@@ -77,7 +78,8 @@ bool LeafItems::intersectInstance(const InstanceItem& inst, const Ray& ray,
   // Back to the world ray's parameter; rounding may not carry it to tMax or past it.
   Float t = r.tMax + dt;
   ray.tMax = t < ray.tMax ? t : nextFloatDown(ray.tMax);
-  transformInteraction(inverse(*w2i), ray.d, isect);
+  // Shared with the Embree aggregate, so both report the same interaction for the same hit.
+  *isect = transformSurfaceInteraction(inverse(*w2i), *isect, ray.d);
   return true;
 }
 
@@ -100,24 +102,6 @@ long LeafItems::bytes() const {
     if (auto it = s.counts.find("bytes"); it != s.counts.end()) b += it->second;
   }
   return b;
-}
-
-void transformInteraction(const Transform& t, const Vector3f& worldRayDir,
-                          SurfaceInteraction* isect) {
-  Vector3f pError;
-  isect->p = t.apply(isect->p, isect->pError, &pError);
-  isect->pError = pError;
-  isect->n = normalize(t(isect->n));
-  isect->wo = normalize(-worldRayDir);
-  isect->dpdu = t(isect->dpdu);
-  isect->dpdv = t(isect->dpdv);
-  isect->dndu = t(isect->dndu);
-  isect->dndv = t(isect->dndv);
-  isect->shading.n = faceForward(normalize(t(isect->shading.n)), Vector3f(isect->n));
-  isect->shading.dpdu = t(isect->shading.dpdu);
-  isect->shading.dpdv = t(isect->shading.dpdv);
-  isect->shading.dndu = t(isect->shading.dndu);
-  isect->shading.dndv = t(isect->shading.dndv);
 }
 
 }  // namespace candela

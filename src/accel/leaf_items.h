@@ -79,11 +79,4 @@ class LeafItems {
   std::vector<std::unique_ptr<Aggregate>> prototypes_;
 };
 
-// *isect (found in instance space) carried to world space by instanceToWorld: the point with its
-// error bound, normals by the inverse transpose (so a normal keeps pointing to the side it pointed
-// to, whatever the handedness of the transform), tangents, and the shading normal turned to the
-// geometric side (pbrt 3e §2.10.5). wo is set from the world ray's direction.
-void transformInteraction(const Transform& instanceToWorld, const Vector3f& worldRayDir,
-                          SurfaceInteraction* isect);
-
 }  // namespace candela

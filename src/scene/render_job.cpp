@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "accel/aggregate_factory.h"
 #include "accel/embree/embree_aggregate.h"
 #include "scene/plugin_factories.h"
 #include "scene/shape_factory.h"
@@ -226,7 +227,12 @@ RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& optio
   job.stats.materials = long(job.materials.size());
   job.stats.textures = job.textures->texturesCreated();
 
-  job.aggregate = std::make_unique<EmbreeAggregate>(device, job.geometry);
+  // The --accel flag wins over the Accelerator statement, whose parameters then do not apply.
+  PluginDesc accel = desc.accelerator;
+  if (!options.accelerator.empty() && options.accelerator != accel.name)
+    accel = PluginDesc{options.accelerator, {}, accel.loc};
+  job.aggregate = createAggregate(accel.name, accel.params, job.geometry, device, accel.loc);
+  reportUnused(accel, warn);
   job.stats.aggregate = job.aggregate->stats();
   std::vector<const Light*> lights;
   for (const auto& l : job.lights) lights.push_back(l.get());

@@ -35,6 +35,7 @@ struct BuildOptions {
   int sppOverride = 0;                 // 0: the sampler's own count
   std::optional<Bounds2f> cropWindow;  // NDC, overrides the film's
   bool quick = false;                  // quarter resolution, an eighth of the samples
+  std::string accelerator;             // overrides the Accelerator statement ("" = the scene's)
   WarningSink warn;                    // may be empty
 };
 
