@@ -22,7 +22,9 @@ std::unique_ptr<Material> createMaterial(const MaterialDesc& desc, TextureFactor
 // The material of shapes that name none (pbrt: matte with Kd 0.5).
 std::unique_ptr<Material> createDefaultMaterial(TextureFactory& textures);
 
-std::unique_ptr<Light> createLight(const LightDesc& desc);
+// Light maps ("mapname") are read through loadImage; without one they are an error.
+std::unique_ptr<Light> createLight(const LightDesc& desc,
+                                   const TextureFactory::ImageLoader& loadImage = {});
 std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* shape);
 
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc);

@@ -1,0 +1,110 @@
+#include "lights/infinite_light.h"
+
+namespace candela {
+
+InfiniteAreaLight::InfiniteAreaLight(const Transform& lightToWorld, const Spectrum& radiance,
+                                     int nSamples, LatLongMap map)
+    : Light(nSamples),
+      lightToWorld_(lightToWorld),
+      worldToLight_(inverse(lightToWorld)),
+      radiance_(radiance),
+      map_(std::move(map)) {
+  if (map_.width <= 0 || map_.height <= 0) {
+    map_ = {};
+    return;
+  }
+  // Luminance times sin θ at the row's centre: the solid angle a texel of that row covers is
+  // proportional to it (§15.4), so bright texels near the poles are not oversampled.
+  std::vector<Float> func(map_.texels.size());
+  for (int j = 0; j < map_.height; ++j) {
+    Float sinTheta = std::sin(kPi * (j + Float(0.5)) / map_.height);
+    for (int i = 0; i < map_.width; ++i) {
+      size_t k = size_t(j) * size_t(map_.width) + size_t(i);
+      func[k] = std::max(Float(0), map_.texels[k].y()) * sinTheta;
+    }
+  }
+  distribution_ = std::make_unique<Distribution2D>(func, map_.width, map_.height);
+}
+
+void InfiniteAreaLight::preprocess(const Bounds3f& sceneBounds) {
+  sceneBounds.boundingSphere(&sceneCenter_, &sceneRadius_);
+}
+
+Point2f InfiniteAreaLight::lookupCoordinates(const Vector3f& w, Float* sinTheta) const {
+  Vector3f wl = worldToLight_(w);
+  Float len = wl.length();
+  if (len == 0) {
+    *sinTheta = 0;
+    return Point2f(0, 0);
+  }
+  wl = wl / len;
+  Float cosTheta = clamp(wl.z, -1, 1);
+  *sinTheta = std::sqrt(std::max(Float(0), 1 - cosTheta * cosTheta));
+  Float phi = std::atan2(wl.y, wl.x);
+  if (phi < 0) phi += 2 * kPi;
+  return Point2f(phi * kInv2Pi, std::acos(cosTheta) * kInvPi);
+}
+
+Spectrum InfiniteAreaLight::radiance(const Vector3f& w) const {
+  if (!distribution_) return radiance_;
+  Float sinTheta;
+  Point2f st = lookupCoordinates(w, &sinTheta);
+  int i = clamp(int(st.x * map_.width), 0, map_.width - 1);
+  int j = clamp(int(st.y * map_.height), 0, map_.height - 1);
+  return radiance_ * map_.texels[size_t(j) * size_t(map_.width) + size_t(i)];
+}
+
+Spectrum InfiniteAreaLight::sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi,
+                                     Float* pdf, VisibilityTester* vis) const {
+  Spectrum L;
+  if (!distribution_) {
+    *wi = normalize(lightToWorld_(sampleUniformSphere(u)));
+    *pdf = uniformSpherePdf();
+    L = radiance_;
+  } else {
+    Float mapPdf;
+    Point2f st = distribution_->sampleContinuous(u, &mapPdf);
+    Float theta = st.y * kPi, phi = st.x * 2 * kPi;
+    Float sinTheta = std::sin(theta);
+    if (mapPdf == 0 || sinTheta == 0) {
+      *pdf = 0;
+      return Spectrum(0);
+    }
+    *wi = normalize(lightToWorld_(sphericalDirection(sinTheta, std::cos(theta), phi)));
+    *pdf = mapPdf / (2 * kPi * kPi * sinTheta);
+    int i = clamp(int(st.x * map_.width), 0, map_.width - 1);
+    int j = clamp(int(st.y * map_.height), 0, map_.height - 1);
+    L = radiance_ * map_.texels[size_t(j) * size_t(map_.width) + size_t(i)];
+  }
+  // A point beyond the scene's bounding sphere: the shadow ray crosses all geometry.
+  Float reach = 2 * sceneRadius_ + distance(ref.p, sceneCenter_);
+  vis->p0 = ref;
+  vis->p1 = Interaction(ref.p + *wi * reach, ref.time);
+  return L;
+}
+
+Float InfiniteAreaLight::pdfLi(const Interaction&, const Vector3f& wi) const {
+  if (!distribution_) return uniformSpherePdf();
+  Float sinTheta;
+  Point2f st = lookupCoordinates(wi, &sinTheta);
+  if (sinTheta == 0) return 0;
+  return distribution_->pdf(st) / (2 * kPi * kPi * sinTheta);
+}
+
+Spectrum InfiniteAreaLight::power() const {
+  Spectrum integral = radiance_ * (4 * kPi);
+  if (distribution_) {
+    // ∫ L dω over the texel cells: row j covers (cos θ0 - cos θ1) 2π / width per texel.
+    Spectrum sum(0);
+    for (int j = 0; j < map_.height; ++j) {
+      Float cell = (std::cos(kPi * j / map_.height) - std::cos(kPi * (j + 1) / map_.height)) *
+                   (2 * kPi / map_.width);
+      for (int i = 0; i < map_.width; ++i)
+        sum += map_.texels[size_t(j) * size_t(map_.width) + size_t(i)] * cell;
+    }
+    integral = radiance_ * sum;
+  }
+  return integral * (kPi * sceneRadius_ * sceneRadius_);
+}
+
+}  // namespace candela
