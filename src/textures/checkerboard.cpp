@@ -42,6 +42,26 @@ Float checkerboardTex2Fraction(Float s, Float t, Float ds, Float dt) {
   return fs + ft - 2 * fs * ft;
 }
 
+namespace {
+// A 32-bit mixing function (MurmurHash3's finalizer).
+uint32_t mix32(uint32_t h) {
+  h ^= h >> 16;
+  h *= 0x85ebca6bu;
+  h ^= h >> 13;
+  h *= 0xc2b2ae35u;
+  h ^= h >> 16;
+  return h;
+}
+}  // namespace
+
+Point2f supersampleJitter(const SurfaceInteraction& si, int index) {
+  uint32_t h = mix32(floatToBits(si.p.x) ^
+                     mix32(floatToBits(si.p.y) ^ mix32(floatToBits(si.p.z) ^ uint32_t(index))));
+  uint32_t h2 = mix32(h ^ 0x9e3779b9u);
+  // The top 24 bits as a float in [0, 1).
+  return Point2f(Float(h >> 8) * 0x1p-24f, Float(h2 >> 8) * 0x1p-24f);
+}
+
 SurfaceInteraction shiftedInteraction(const SurfaceInteraction& si, Float dx, Float dy,
                                       Float shrink) {
   SurfaceInteraction r = si;

@@ -4,10 +4,12 @@
 //   "closedform" (2D default): the box-filtered average over the footprint's bounding box,
 //     computed from the integral of the 1D check function; a footprint inside one check
 //     evaluates only that check's texture, one wider than two checks gives the 50% mix;
-//   "supersample": 16 samples on a 4x4 grid of cell centres over the footprint, Gaussian
-//     weighted, each evaluating its check's texture at a shifted interaction with footprints
-//     shrunk by 4 (so nested textures filter correctly, §11.6.2, figure 11.19); the draft jitters
-//     the samples, we keep the grid so an image stays a pure function of the scene and seed;
+//   "supersample": 16 stratified samples (4x4) over the footprint, Gaussian weighted, each
+//     evaluating its check's texture at a shifted interaction with footprints shrunk by 4 (so
+//     nested textures filter correctly, §11.6.2, figure 11.19). The jitter comes from a hash of
+//     the shading point rather than a random number generator, so an image stays a pure function
+//     of the scene and seed (an unjittered grid aliases: at 8 checks per pixel all 16 samples
+//     would land on the same colour);
 //   "none": point sampling.
 // The solid checkerboard takes "none" or "supersample" (its default, as the draft's §11.6.3; a
 // 3D closed form does not exist, so "closedform" selects supersampling there).
@@ -37,6 +39,9 @@ Float checkerboardTex2Fraction(Float s, Float t, Float ds, Float dt);
 SurfaceInteraction shiftedInteraction(const SurfaceInteraction& si, Float dx, Float dy,
                                       Float shrink);
 
+// A deterministic jitter in [0, 1)^2 for sample `index` at si: a hash of si's position.
+Point2f supersampleJitter(const SurfaceInteraction& si, int index);
+
 // The supersampled checkerboard: isTex2(shifted interaction) decides each sample's texture.
 template <typename T, typename IsTex2>
 T supersampleChecks(const SurfaceInteraction& si, const Texture<T>& tex1, const Texture<T>& tex2,
@@ -46,7 +51,8 @@ T supersampleChecks(const SurfaceInteraction& si, const Texture<T>& tex1, const 
   Float weightSum = 0;
   for (int j = 0; j < kN; ++j)
     for (int i = 0; i < kN; ++i) {
-      Float dx = (i + Float(0.5)) / kN - Float(0.5), dy = (j + Float(0.5)) / kN - Float(0.5);
+      Point2f jitter = supersampleJitter(si, j * kN + i);
+      Float dx = (i + jitter.x) / kN - Float(0.5), dy = (j + jitter.y) / kN - Float(0.5);
       SurfaceInteraction shifted = shiftedInteraction(si, dx, dy, Float(1) / kN);
       Float w = std::exp(-2 * (dx * dx + dy * dy));
       sum += (isTex2(shifted) ? tex2 : tex1).evaluate(shifted) * w;

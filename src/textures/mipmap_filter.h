@@ -56,7 +56,6 @@ typename P::Value top(const P& p) {
 // Bilinear interpolation of the four texels around (s, t) at a level (the draft's triangle()).
 template <typename P>
 typename P::Value bilinear(const P& p, int level, Float s, Float t) {
-  if (level >= p.levels() - 1) return top(p);
   s = s * Float(p.levelWidth(level)) - 0.5f;
   t = t * Float(p.levelHeight(level)) - 0.5f;
   Float fs = std::floor(s), ft = std::floor(t);

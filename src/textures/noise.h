@@ -29,7 +29,7 @@ Float fbm(const Point3f& p, const Vector3f& dpdx, const Vector3f& dpdy, Float om
 
 // The mean of |noise| over space, measured (tests/unit/test_noise.cpp checks it): what clamping
 // substitutes for the octaves of turbulence that are dropped.
-inline constexpr Float kMeanAbsNoise = 0.19f;
+inline constexpr Float kMeanAbsNoise = 0.218f;
 
 // Turbulence: FBm of |noise| (pbrt-v2's "wrinkled"). Octaves dropped by clamping contribute
 // their mean, omega^i kMeanAbsNoise each, so the texture's average does not change with the

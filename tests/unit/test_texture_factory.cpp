@@ -1,0 +1,329 @@
+// TextureFactory: classes and parameters, references between textures, laziness, one load per
+// image, and the errors a scene can provoke.
+#include <gtest/gtest.h>
+
+#include "scene/texture_factory.h"
+#include "textures/image_texture.h"
+
+using namespace candela;
+
+namespace {
+
+ParamItem floatItem(const std::string& name, std::vector<Float> v) {
+  ParamItem i;
+  i.type = ParamType::Float;
+  i.name = name;
+  i.typeName = "float";
+  i.loc = FileLoc{"/scenes/a/scene.pbrt", 9, 5};
+  i.floats = std::move(v);
+  return i;
+}
+ParamItem rgbItem(const std::string& name, Spectrum s) {
+  ParamItem i = floatItem(name, {s[0], s[1], s[2]});
+  i.type = ParamType::Spectrum;
+  i.typeName = "rgb";
+  return i;
+}
+ParamItem stringItem(const std::string& name, const std::string& v,
+                     ParamType type = ParamType::String) {
+  ParamItem i;
+  i.type = type;
+  i.name = name;
+  i.typeName = type == ParamType::String ? "string" : "texture";
+  i.loc = FileLoc{"/scenes/a/scene.pbrt", 9, 5};
+  i.strings = {v};
+  return i;
+}
+ParamItem texItem(const std::string& name, const std::string& texture) {
+  return stringItem(name, texture, ParamType::Texture);
+}
+ParamItem intItem(const std::string& name, int v) {
+  ParamItem i;
+  i.type = ParamType::Integer;
+  i.name = name;
+  i.typeName = "integer";
+  i.ints = {v};
+  return i;
+}
+
+TextureDesc tex(const std::string& name, const std::string& type, const std::string& cls,
+                std::vector<ParamItem> items = {}, int line = 3) {
+  TextureDesc d;
+  d.textureName = name;
+  d.type = type;
+  d.name = cls;
+  d.loc = FileLoc{"/scenes/a/scene.pbrt", line, 1};
+  for (auto& i : items) d.params.add(i);
+  return d;
+}
+
+ParamSet material(std::vector<ParamItem> items) {
+  ParamSet p;
+  for (auto& i : items) p.add(i);
+  return p;
+}
+
+template <typename F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+const FileLoc kMatLoc{"/scenes/a/scene.pbrt", 20, 1};
+
+// An image loader that makes a w x h grey image of value `value` and counts its calls.
+struct FakeLoader {
+  std::vector<std::pair<std::string, std::string>> calls;
+  Float value = 0.5f;
+  TextureFactory::ImageLoader loader() {
+    return [this](const std::string& path, const std::string& colorSpace) {
+      calls.emplace_back(path, colorSpace);
+      if (path.find("missing") != std::string::npos)
+        throw FileError(path, "cannot read texture image: no such file");
+      ImageBuffer img(4, 2, {"R", "G", "B"});
+      for (float& v : img.data) v = value;
+      return img;
+    };
+  }
+};
+
+SurfaceInteraction atUV(Float u, Float v) {
+  SurfaceInteraction si;
+  si.uv = Point2f(u, v);
+  si.p = Point3f(u, v, 0);
+  return si;
+}
+
+}  // namespace
+
+TEST(TextureFactory, ConstantsAndReferences) {
+  std::vector<TextureDesc> descs = {
+      tex("c", "spectrum", "constant", {rgbItem("value", Spectrum(0.1f, 0.2f, 0.3f))}),
+      tex("f", "float", "constant", {floatItem("value", {0.25f})}),
+      tex("unused", "spectrum", "checkerboard"),
+  };
+  TextureFactory f(descs);
+  const Texture<Spectrum>* kd =
+      f.spectrum(material({texItem("Kd", "c")}), "Kd", Spectrum(1), kMatLoc);
+  const Texture<Spectrum>* again =
+      f.spectrum(material({texItem("Kr", "c")}), "Kr", Spectrum(1), kMatLoc);
+  EXPECT_EQ(kd, again);  // created once
+  EXPECT_EQ(kd->evaluate(atUV(0, 0)), Spectrum(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(f.scalar(material({texItem("sigma", "f")}), "sigma", 0, kMatLoc)->evaluate(atUV(0, 0)),
+            0.25f);
+  EXPECT_EQ(f.texturesCreated(), 2);  // "unused" never made
+  // No reference: a constant of the parameter's value, or the default.
+  EXPECT_EQ(
+      f.scalar(material({floatItem("sigma", {3})}), "sigma", 0, kMatLoc)->evaluate(atUV(0, 0)),
+      3.f);
+  EXPECT_EQ(f.spectrum(ParamSet(), "Kd", Spectrum(0.5f), kMatLoc)->evaluate(atUV(0, 0)),
+            Spectrum(0.5f));
+  EXPECT_EQ(f.texturesCreated(), 2);
+}
+
+TEST(TextureFactory, EveryClassWithItsDefaults) {
+  std::vector<TextureDesc> descs = {
+      tex("scale", "float", "scale"),  // 1 * 1
+      tex("mix", "float", "mix"),      // (1 - .5) 0 + .5 * 1
+      tex("bilerp", "float", "bilerp"),
+      tex("uv", "spectrum", "uv"),
+      tex("checks", "float", "checkerboard"),
+      tex("checks3", "float", "checkerboard", {intItem("dimension", 3)}),
+      tex("dots", "float", "dots"),
+      tex("fbm", "float", "fbm"),
+      tex("wrinkled", "spectrum", "wrinkled"),
+      tex("windy", "float", "windy"),
+      tex("marble", "spectrum", "marble"),
+      tex("constant", "float", "constant"),
+  };
+  TextureFactory f(descs);
+  auto scalar = [&](const std::string& name, Float u, Float v) {
+    return f.scalar(material({texItem("x", name)}), "x", 0, kMatLoc)->evaluate(atUV(u, v));
+  };
+  EXPECT_EQ(scalar("scale", .3f, .3f), 1.f);
+  EXPECT_EQ(scalar("mix", .3f, .3f), 0.5f);
+  EXPECT_FLOAT_EQ(scalar("bilerp", .3f, .6f), .6f);  // v00 0, v01 1, v10 0, v11 1: t
+  EXPECT_EQ(scalar("checks", .5f, .5f), 1.f);        // tex1 = 1 on even checks
+  EXPECT_EQ(scalar("checks", 1.5f, .5f), 0.f);
+  EXPECT_EQ(scalar("checks3", 1.5f, .5f), 0.f);
+  EXPECT_EQ(scalar("constant", .5f, .5f), 1.f);
+  for (const char* name : {"dots", "fbm", "windy"})
+    EXPECT_TRUE(std::isfinite(scalar(name, 2.3f, 4.1f))) << name;
+  auto spectrum = [&](const std::string& name, Float u, Float v) {
+    return f.spectrum(material({texItem("x", name)}), "x", Spectrum(0), kMatLoc)
+        ->evaluate(atUV(u, v));
+  };
+  EXPECT_EQ(spectrum("uv", 1.25f, 0.5f), Spectrum(0.25f, 0.5f, 0));
+  EXPECT_TRUE(spectrum("marble", 0.3f, 0.7f).isFinite());
+  EXPECT_TRUE(spectrum("wrinkled", 0.3f, 0.7f).isFinite());
+  EXPECT_EQ(f.texturesCreated(), int(descs.size()));
+}
+
+TEST(TextureFactory, TexturesNameEarlierTexturesOnly) {
+  // "a" is redefined as twice the earlier "a": the reference inside means the definition before.
+  std::vector<TextureDesc> descs = {
+      tex("a", "float", "constant", {floatItem("value", {0.25f})}, 1),
+      tex("two", "float", "constant", {floatItem("value", {2})}, 2),
+      tex("a", "float", "scale", {texItem("tex1", "a"), texItem("tex2", "two")}, 3),
+      tex("m", "float", "mix", {texItem("tex1", "a"), texItem("amount", "two")}, 4),
+  };
+  TextureFactory f(descs);
+  EXPECT_EQ(f.scalar(material({texItem("x", "a")}), "x", 0, kMatLoc)->evaluate(atUV(0, 0)), 0.5f);
+  // m: (1 - 2) * a + 2 * tex2 default 1 = -0.5 + 2.
+  EXPECT_EQ(f.scalar(material({texItem("x", "m")}), "x", 0, kMatLoc)->evaluate(atUV(0, 0)), 1.5f);
+  EXPECT_EQ(f.texturesCreated(), 4);
+
+  // A texture cannot name itself or anything defined after it, so cycles cannot exist.
+  std::vector<TextureDesc> cyclic = {
+      tex("p", "float", "scale", {texItem("tex1", "q")}, 1),
+      tex("q", "float", "scale", {texItem("tex1", "p")}, 2),
+  };
+  TextureFactory g(cyclic);
+  std::string e = errorOf([&] { g.scalar(material({texItem("x", "p")}), "x", 0, kMatLoc); });
+  EXPECT_NE(e.find("no float texture named 'q' defined before this texture"), std::string::npos)
+      << e;
+}
+
+TEST(TextureFactory, Errors) {
+  std::vector<TextureDesc> descs = {
+      tex("f", "float", "constant"),
+      tex("weird", "spectrum", "plaid", {}, 7),
+      tex("uvf", "float", "uv", {}, 8),
+      tex("marblef", "float", "marble", {}, 9),
+      tex("cube", "float", "checkerboard", {intItem("dimension", 4)}),
+      tex("aa", "float", "checkerboard", {stringItem("aamode", "fancy")}),
+      tex("map", "float", "bilerp", {stringItem("mapping", "cubic")}),
+  };
+  TextureFactory f(descs);
+  auto useS = [&](const std::string& name) {
+    return errorOf(
+        [&] { f.spectrum(material({texItem("Kd", name)}), "Kd", Spectrum(1), kMatLoc); });
+  };
+  auto useF = [&](const std::string& name) {
+    return errorOf([&] { f.scalar(material({texItem("x", name)}), "x", 0, kMatLoc); });
+  };
+  std::string e = useS("weird");
+  EXPECT_NE(e.find("scene.pbrt:7:1"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown texture class 'plaid'"), std::string::npos) << e;
+  for (const char* known : {"checkerboard", "imagemap", "marble", "wrinkled", "windy", "bilerp"})
+    EXPECT_NE(e.find(known), std::string::npos) << known;
+  e = useS("f");
+  EXPECT_NE(e.find("'f' is a float texture"), std::string::npos) << e;
+  EXPECT_NE(e.find("needs a spectrum texture"), std::string::npos) << e;
+  e = useS("nothing");
+  EXPECT_NE(e.find("no spectrum texture named 'nothing'"), std::string::npos) << e;
+  EXPECT_NE(useF("uvf").find("spectrum textures only"), std::string::npos);
+  EXPECT_NE(useF("marblef").find("spectrum textures only"), std::string::npos);
+  EXPECT_NE(useF("cube").find("dimension must be 2 or 3"), std::string::npos);
+  EXPECT_NE(useF("aa").find("unknown checkerboard aamode 'fancy'"), std::string::npos);
+  EXPECT_NE(useF("map").find("unknown texture mapping 'cubic'"), std::string::npos);
+}
+
+TEST(TextureFactory, UnusedTextureParametersAreReported) {
+  std::vector<TextureDesc> descs = {
+      tex("c", "float", "constant", {floatItem("value", {1}), floatItem("valeu", {2})})};
+  std::vector<std::string> warnings;
+  TextureFactory f(descs, {}, [&](const FileLoc&, const std::string& m) { warnings.push_back(m); });
+  f.scalar(material({texItem("x", "c")}), "x", 0, kMatLoc);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("\"float valeu\" of texture 'c'"), std::string::npos) << warnings[0];
+}
+
+TEST(TextureFactory, ImagesAreLoadedOnceAndOnlyWhenUsed) {
+  FakeLoader fake;
+  std::vector<TextureDesc> descs = {
+      tex("a", "spectrum", "imagemap", {stringItem("filename", "tex/wood.png")}),
+      tex("b", "spectrum", "imagemap",
+          {stringItem("filename", "tex/../tex/wood.png"), floatItem("uscale", {4})}),
+      tex("c", "spectrum", "imagemap",
+          {stringItem("filename", "/abs/wood.png"), stringItem("wrap", "clamp")}),
+      tex("clamped", "spectrum", "imagemap",
+          {stringItem("filename", "tex/wood.png"), stringItem("wrap", "clamp")}),
+      tex("grey", "float", "imagemap", {stringItem("filename", "tex/wood.png")}),
+      tex("linear", "spectrum", "imagemap",
+          {stringItem("filename", "tex/wood.png"), stringItem("colorspace", "raw")}),
+      tex("never", "spectrum", "imagemap", {stringItem("filename", "missing.png")}),
+  };
+  TextureFactory f(descs, fake.loader());
+  auto use = [&](const std::string& name) {
+    return f.spectrum(material({texItem("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
+  };
+  const Texture<Spectrum>* a = use("a");
+  const Texture<Spectrum>* b = use("b");
+  ASSERT_EQ(fake.calls.size(), 1u);
+  // Relative to the scene file's directory, normalized, with the default colour space rule.
+  EXPECT_EQ(fake.calls[0], std::make_pair(std::string("/scenes/a/tex/wood.png"), std::string()));
+  // Same file, wrap, scale and gamma: the same MIP map.
+  EXPECT_EQ(&dynamic_cast<const ImageTexture<Spectrum>*>(a)->mipmap(),
+            &dynamic_cast<const ImageTexture<Spectrum>*>(b)->mipmap());
+  EXPECT_EQ(f.mipmapsBuilt(), 1);
+  use("c");
+  EXPECT_EQ(fake.calls.back().first, "/abs/wood.png");
+  use("clamped");  // another pyramid, no new load
+  f.scalar(material({texItem("x", "grey")}), "x", 0, kMatLoc)->evaluate(atUV(0.3f, 0.3f));
+  EXPECT_EQ(f.mipmapsBuilt(), 4);
+  EXPECT_EQ(fake.calls.size(), 2u);
+  use("linear");  // another colour space: another load
+  ASSERT_EQ(fake.calls.size(), 3u);
+  EXPECT_EQ(fake.calls.back().second, "raw");
+  EXPECT_EQ(f.imagesLoaded(), 3);
+  EXPECT_NEAR(a->evaluate(atUV(0.3f, 0.6f))[1], 0.5f, 1e-6f);
+  // "never" is never used, so its missing file never matters.
+  for (const auto& call : fake.calls) EXPECT_EQ(call.first.find("missing"), std::string::npos);
+}
+
+TEST(TextureFactory, ImageErrorsNameThePath) {
+  FakeLoader fake;
+  std::vector<TextureDesc> descs = {
+      tex("gone", "spectrum", "imagemap", {stringItem("filename", "missing.png")}, 12),
+      tex("nofile", "spectrum", "imagemap", {}, 13),
+      tex("wrap", "spectrum", "imagemap",
+          {stringItem("filename", "x.png"), stringItem("wrap", "mirror")}, 14),
+  };
+  TextureFactory f(descs, fake.loader());
+  auto use = [&](const std::string& name) {
+    return errorOf(
+        [&] { f.spectrum(material({texItem("Kd", name)}), "Kd", Spectrum(1), kMatLoc); });
+  };
+  std::string e = use("gone");
+  EXPECT_NE(e.find("scene.pbrt:12:1"), std::string::npos) << e;
+  EXPECT_NE(e.find("/scenes/a/missing.png"), std::string::npos) << e;
+  EXPECT_NE(e.find("no such file"), std::string::npos) << e;
+  EXPECT_NE(use("nofile").find("needs a \"string filename\""), std::string::npos);
+  EXPECT_NE(use("wrap").find("unknown wrap mode 'mirror'"), std::string::npos);
+  EXPECT_EQ(fake.calls.size(), 1u);  // the parameter errors came before any reading
+
+  TextureFactory noReader(descs);
+  e = errorOf(
+      [&] { noReader.spectrum(material({texItem("Kd", "gone")}), "Kd", Spectrum(1), kMatLoc); });
+  EXPECT_NE(e.find("no image reader"), std::string::npos) << e;
+  EXPECT_NE(e.find("/scenes/a/missing.png"), std::string::npos) << e;
+}
+
+TEST(TextureFactory, ImageScaleAndGamma) {
+  FakeLoader fake;
+  fake.value = 0.25f;
+  std::vector<TextureDesc> descs = {
+      tex("g", "float", "imagemap",
+          {stringItem("filename", "g.exr"), floatItem("scale", {2}), floatItem("gamma", {2}),
+           stringItem("trilinear", "x")}),
+  };
+  // "trilinear" of the wrong type is an error at its own location.
+  TextureFactory bad(descs, fake.loader());
+  EXPECT_NE(errorOf([&] {
+              bad.scalar(material({texItem("x", "g")}), "x", 0, kMatLoc);
+            }).find("trilinear"),
+            std::string::npos);
+  descs[0].params = ParamSet();
+  descs[0].params.add(stringItem("filename", "g.exr"));
+  descs[0].params.add(floatItem("scale", {2}));
+  descs[0].params.add(floatItem("gamma", {2}));
+  TextureFactory f(descs, fake.loader());
+  EXPECT_FLOAT_EQ(
+      f.scalar(material({texItem("x", "g")}), "x", 0, kMatLoc)->evaluate(atUV(0.3f, 0.3f)),
+      0.25f);  // (2 * 0.25)^2
+}
