@@ -4,7 +4,9 @@
 
 namespace candela {
 
-const BSDF* MatteMaterial::getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const {
+const BSDF* MatteMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
+  SurfaceInteraction bumped;
+  const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
   Spectrum r = clampSpectrum(kd_->evaluate(si), 0, kInfinity);
   Float sigma = clamp(sigma_->evaluate(si), 0, 90);

@@ -2,14 +2,14 @@
 #pragma once
 
 #include "materials/material.h"
-#include "textures/texture.h"
 
 namespace candela {
 
 class MatteMaterial : public Material {
  public:
-  MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* sigma)
-      : kd_(kd), sigma_(sigma) {}
+  MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* sigma,
+                const Texture<Float>* bump = nullptr)
+      : Material(bump), kd_(kd), sigma_(sigma) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
 
  private:

@@ -16,6 +16,8 @@ class BSDF {
     if (count_ < kMaxBxDFs) bxdfs_[count_++] = b;
   }
   int numComponents(int flags = kAllBxDF) const;
+  // The i-th added BxDF, 0 <= i < numComponents() (for materials that combine BSDFs: mix).
+  const BxDF* component(int i) const { return bxdfs_[i]; }
   Vector3f worldToLocal(const Vector3f& v) const {
     return Vector3f(dot(v, ss_), dot(v, ts_), dot(v, ns_));
   }

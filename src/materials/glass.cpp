@@ -1,0 +1,19 @@
+#include "materials/glass.h"
+
+#include "reflection/specular.h"
+
+namespace candela {
+
+const BSDF* GlassMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
+  SurfaceInteraction bumped;
+  const SurfaceInteraction& si = shadingPoint(si0, &bumped);
+  Float eta = index_->evaluate(si);
+  BSDF* bsdf = arena.make<BSDF>(si, eta);
+  Spectrum r = clampSpectrum(kr_->evaluate(si)), t = clampSpectrum(kt_->evaluate(si));
+  if (!r.isBlack())
+    bsdf->add(arena.make<SpecularReflection>(r, arena.make<FresnelDielectric>(Float(1), eta)));
+  if (!t.isBlack()) bsdf->add(arena.make<SpecularTransmission>(t, Float(1), eta));
+  return bsdf;
+}
+
+}  // namespace candela

@@ -1,0 +1,20 @@
+// lrt's measured Lafortune materials (lrt draft §10.9): a fixed fit, no parameters but the bump
+// map. Only "clay" has its coefficients in the draft; the factory rejects the other names.
+#pragma once
+
+#include "materials/material.h"
+#include "reflection/lafortune.h"
+
+namespace candela {
+
+class LafortuneMaterial : public Material {
+ public:
+  explicit LafortuneMaterial(const LafortuneFit& fit, const Texture<Float>* bump = nullptr)
+      : Material(bump), fit_(fit) {}
+  const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+
+ private:
+  LafortuneFit fit_;  // static data
+};
+
+}  // namespace candela

@@ -1,0 +1,19 @@
+// "mirror" (lrt draft §10.6; pbrt-v2 default Kr .9): perfect specular reflection of Kr at every
+// angle (no Fresnel falloff).
+#pragma once
+
+#include "materials/material.h"
+
+namespace candela {
+
+class MirrorMaterial : public Material {
+ public:
+  explicit MirrorMaterial(const Texture<Spectrum>* kr, const Texture<Float>* bump = nullptr)
+      : Material(bump), kr_(kr) {}
+  const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+
+ private:
+  const Texture<Spectrum>* kr_;
+};
+
+}  // namespace candela

@@ -1,0 +1,32 @@
+#include "materials/translucent.h"
+
+#include "materials/plastic.h"
+#include "reflection/brdf_to_btdf.h"
+#include "reflection/microfacet.h"
+
+namespace candela {
+
+const BSDF* TranslucentMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
+  SurfaceInteraction bumped;
+  const SurfaceInteraction& si = shadingPoint(si0, &bumped);
+  BSDF* bsdf = arena.make<BSDF>(si, index_);
+  Spectrum r = clampSpectrum(reflect_->evaluate(si)), t = clampSpectrum(transmit_->evaluate(si));
+  if (r.isBlack() && t.isBlack()) return bsdf;
+  Spectrum kd = clampSpectrum(kd_->evaluate(si));
+  if (!kd.isBlack()) {
+    if (!r.isBlack()) bsdf->add(arena.make<LambertianReflection>(r * kd));
+    if (!t.isBlack()) bsdf->add(arena.make<BRDFToBTDF>(arena.make<LambertianReflection>(t * kd)));
+  }
+  Spectrum ks = clampSpectrum(ks_->evaluate(si));
+  if (!ks.isBlack()) {
+    const Fresnel* fresnel = arena.make<FresnelDielectric>(index_, Float(1));
+    const MicrofacetDistribution* d =
+        arena.make<BlinnDistribution>(blinnExponent(roughness_->evaluate(si)));
+    if (!r.isBlack()) bsdf->add(arena.make<MicrofacetReflection>(r * ks, fresnel, d));
+    if (!t.isBlack())
+      bsdf->add(arena.make<BRDFToBTDF>(arena.make<MicrofacetReflection>(t * ks, fresnel, d)));
+  }
+  return bsdf;
+}
+
+}  // namespace candela

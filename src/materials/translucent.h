@@ -1,0 +1,32 @@
+// "translucent" (lrt draft §10.4; pbrt-v2 defaults Kd .25, Ks .25, reflect .5, transmit .5,
+// roughness .1, index 1.5): plastic's diffuse and glossy lobes, each both reflected (times
+// reflect) and mirrored to the other side (times transmit). Black terms are skipped. As in
+// pbrt-v2 the coat's Fresnel term has the index outside, and the BSDF carries the index.
+#pragma once
+
+#include "materials/material.h"
+
+namespace candela {
+
+class TranslucentMaterial : public Material {
+ public:
+  TranslucentMaterial(const Texture<Spectrum>* kd, const Texture<Spectrum>* ks,
+                      const Texture<Spectrum>* reflect, const Texture<Spectrum>* transmit,
+                      const Texture<Float>* roughness, Float index,
+                      const Texture<Float>* bump = nullptr)
+      : Material(bump),
+        kd_(kd),
+        ks_(ks),
+        reflect_(reflect),
+        transmit_(transmit),
+        roughness_(roughness),
+        index_(index) {}
+  const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+
+ private:
+  const Texture<Spectrum>*kd_, *ks_, *reflect_, *transmit_;
+  const Texture<Float>* roughness_;
+  Float index_;
+};
+
+}  // namespace candela

@@ -1,0 +1,25 @@
+// "uber" (pbrt-v2 defaults Kd .25, Ks .25, Kr 0, roughness .1, opacity 1, index 1.5): plastic's
+// diffuse and glossy lobes plus a Fresnel mirror, all times opacity, and a straight-through
+// transmission of 1 - opacity. As in pbrt-v2 (and plastic) the dielectric Fresnel terms put the
+// index outside, and the BSDF's eta stays 1: passing straight through bends nothing.
+#pragma once
+
+#include "materials/material.h"
+
+namespace candela {
+
+class UberMaterial : public Material {
+ public:
+  struct Textures {
+    const Texture<Spectrum>*kd, *ks, *kr, *opacity;
+    const Texture<Float>*roughness, *index;
+  };
+  explicit UberMaterial(const Textures& t, const Texture<Float>* bump = nullptr)
+      : Material(bump), t_(t) {}
+  const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+
+ private:
+  Textures t_;
+};
+
+}  // namespace candela
