@@ -89,7 +89,7 @@ class MaterialCache {
 void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* noAreaLight,
               MaterialCache& materials, RenderJob& job, std::vector<Primitive>* out,
               const WarningSink& warn) {
-  CreatedShapes created = createShapes(sd, objectToWorld);
+  CreatedShapes created = createShapes(sd, objectToWorld, *job.textures);
   reportUnused(sd, warn);
   const Material* material = materials.get(sd.material);
   bool allowAreaLight = noAreaLight == nullptr;

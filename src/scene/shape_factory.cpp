@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "scene/plugin_factories.h"
+#include "scene/texture_factory.h"
 #include "shapes/cone.h"
 #include "shapes/cylinder.h"
 #include "shapes/disk.h"
@@ -17,6 +18,30 @@ namespace candela {
 CreatedShapes::CreatedShapes() = default;
 CreatedShapes::~CreatedShapes() = default;
 CreatedShapes::CreatedShapes(CreatedShapes&&) noexcept = default;
+
+namespace {
+
+// pbrt-v2's cut-outs: "alpha" (a float texture or constant; 1, opaque, needs no test) and
+// "shadowalpha" for occlusion queries, which defaults to alpha.
+void readAlpha(const ShapeDesc& desc, TextureFactory& textures, TriangleMesh* mesh) {
+  auto read = [&](const char* name) -> const Texture<Float>* {
+    if (desc.params.getTexture(name).empty() && desc.params.getOneFloat(name, 1) == 1)
+      return nullptr;
+    return textures.scalar(desc.params, name, 1, desc.loc);
+  };
+  mesh->alpha = read("alpha");
+  mesh->shadowAlpha = desc.params.find("shadowalpha") ? read("shadowalpha") : mesh->alpha;
+}
+
+}  // namespace
+
+CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
+                           TextureFactory& textures) {
+  CreatedShapes out = createShapes(desc, objectToWorld);
+  if (out.mesh && (desc.name == "trianglemesh" || desc.name == "plymesh"))
+    readAlpha(desc, textures, out.mesh.get());
+  return out;
+}
 
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld) {
   CreatedShapes out;

@@ -19,6 +19,13 @@ struct CreatedShapes {
   CreatedShapes(CreatedShapes&&) noexcept;
 };
 
+class TextureFactory;
+
+// Triangle meshes' "alpha" and "shadowalpha" (pbrt-v2 cut-outs, float textures or constants) come
+// from textures.
+CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
+                           TextureFactory& textures);
+// Without textures: "alpha" and "shadowalpha" are not read (and so reported unused).
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld);
 
 }  // namespace candela

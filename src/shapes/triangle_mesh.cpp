@@ -4,6 +4,7 @@
 
 #include "core/sampling.h"
 #include "shapes/ply_reader.h"
+#include "textures/texture.h"
 
 namespace candela {
 
@@ -70,7 +71,9 @@ bool intersectTriangle(const Point3f& p0, const Point3f& p1, const Point3f& p2, 
   Float det = e0 + e1 + e2;
   if (det == 0 || std::isnan(det)) return false;
 
-  // Scaled distance, compared without dividing by det until the hit is known.
+  // Scaled distance, compared without dividing by det until the hit is known. The sheared x, y
+  // were computed from the unscaled z, whose size their error bounds need below.
+  Float maxZw = maxComponent(abs(Vector3f(p0t.z, p1t.z, p2t.z)));
   p0t.z *= sz;
   p1t.z *= sz;
   p2t.z *= sz;
@@ -87,8 +90,11 @@ bool intersectTriangle(const Point3f& p0, const Point3f& p1, const Point3f& p2, 
   Float deltaZ = gamma(3) * maxZt;
   Float maxXt = maxComponent(abs(Vector3f(p0t.x, p1t.x, p2t.x)));
   Float maxYt = maxComponent(abs(Vector3f(p0t.y, p1t.y, p2t.y)));
-  Float deltaX = gamma(5) * (maxXt + maxZt);
-  Float deltaY = gamma(5) * (maxYt + maxZt);
+  // (pbrt 3e uses the scaled z here, which mixes units: the bound then grows or shrinks with
+  // |d|, rejecting real hits of unnormalised rays on small geometry and admitting self-hits on
+  // large geometry.)
+  Float deltaX = gamma(5) * (maxXt + maxZw);
+  Float deltaY = gamma(5) * (maxYt + maxZw);
   Float deltaE = 2 * (gamma(2) * maxXt * maxYt + deltaY * maxXt + deltaX * maxYt);
   Float maxE = maxComponent(abs(Vector3f(e0, e1, e2)));
   Float deltaT = 3 * (gamma(3) * maxE * maxZt + deltaE * maxZt + deltaZ * maxE) * std::abs(invDet);
@@ -126,6 +132,7 @@ bool TriangleShape::intersect(const Ray& ray, Float* tHit, SurfaceInteraction* i
   TriangleHit hit;
   if (!intersectTriangle(mesh_->p[vi[0]], mesh_->p[vi[1]], mesh_->p[vi[2]], ray, &hit))
     return false;
+  if (mesh_->alpha && alphaCulls(ray, hit.b1, hit.b2, hit.t, false)) return false;
   *tHit = hit.t;
   if (isect) *isect = interactionAt(ray, hit.b1, hit.b2, hit.t);
   return true;
@@ -134,7 +141,23 @@ bool TriangleShape::intersect(const Ray& ray, Float* tHit, SurfaceInteraction* i
 bool TriangleShape::intersectP(const Ray& ray) const {
   const int* vi = v();
   TriangleHit hit;
-  return intersectTriangle(mesh_->p[vi[0]], mesh_->p[vi[1]], mesh_->p[vi[2]], ray, &hit);
+  if (!intersectTriangle(mesh_->p[vi[0]], mesh_->p[vi[1]], mesh_->p[vi[2]], ray, &hit))
+    return false;
+  return !(mesh_->shadowAlpha && alphaCulls(ray, hit.b1, hit.b2, hit.t, true));
+}
+
+bool TriangleShape::degenerate() const {
+  const int* vi = v();
+  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
+  for (const Point3f& q : {p0, p1, p2})
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) return true;
+  return cross(p1 - p0, p2 - p0) == Vector3f();
+}
+
+bool TriangleShape::alphaCulls(const Ray& ray, Float b1, Float b2, Float t, bool forShadow) const {
+  const Texture<Float>* a = forShadow ? mesh_->shadowAlpha : mesh_->alpha;
+  // Exactly zero, as pbrt-v2 tests it: partial alpha is not stochastic transparency.
+  return a && a->evaluate(interactionAt(ray, b1, b2, t)) == 0;
 }
 
 Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2) const {

@@ -15,6 +15,9 @@
 
 namespace candela {
 
+template <typename T>
+class Texture;
+
 struct TriangleMesh {
   // Positions, normals and tangents are given in object space. n (if given) is flipped when
   // reverseOrientation, so that ReverseOrientation turns smooth meshes around too (as pbrt 4e
@@ -30,6 +33,11 @@ struct TriangleMesh {
   std::vector<Vector3f> s;   // world space, empty or one per vertex
   std::vector<Point2f> uv;   // empty or one per vertex
   bool reverseOrientation, transformSwapsHandedness;
+  // Cut-outs (pbrt-v2's "alpha" and "shadowalpha"): a hit where the texture is 0 at its (u, v)
+  // is ignored, by intersect (alpha) and by intersectP (shadowAlpha). Owned by the scene's
+  // textures; nullptr: opaque.
+  const Texture<Float>* alpha = nullptr;
+  const Texture<Float>* shadowAlpha = nullptr;
 };
 
 class TriangleShape : public Shape {
@@ -44,6 +52,10 @@ class TriangleShape : public Shape {
   // The surface at barycentrics (b1, b2) (p = b0 p0 + b1 p1 + b2 p2, b0 = 1 - b1 - b2) hit at
   // ray parameter t: as used for the hits Embree reports (its u, v are b1, b2).
   SurfaceInteraction interactionAt(const Ray& ray, Float b1, Float b2, Float t) const;
+  // Zero area (collinear or repeated vertices) or a NaN or infinite vertex: never hit.
+  bool degenerate() const;
+  // Whether the mesh's alpha (shadowAlpha when forShadow) cuts the hit (b1, b2, t) away.
+  bool alphaCulls(const Ray& ray, Float b1, Float b2, Float t, bool forShadow) const;
   Float area() const override;
   // Uniform barycentrics; the normal oriented as an intersection's.
   Interaction sample(const Point2f& u, Float* pdf) const override;

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "accel/embree/embree_geometry.h"
+#include "accel/embree/embree_triangle_filters.h"
 #include "core/interaction_transform.h"
 #include "shapes/triangle_mesh.h"
 
@@ -121,6 +122,7 @@ void EmbreeAggregate::addPrimitives(const Primitive* primitives, size_t n) {
       vb[3 * v + 2] = mesh->p[v].z;
     }
     std::copy(indices.begin(), indices.end(), ib);
+    setTriangleFilters(g, *mesh);  // alpha cut-outs and degenerate triangles, where present
     triangles_ += long(info->primIndex.size());
     ++triangleGeometries_;
     attach(g, std::move(info));

@@ -1,0 +1,181 @@
+// Triangle-mesh cut-outs ("alpha", "shadowalpha"; pbrt-v2): hits where the texture is 0 are
+// ignored by the triangle's own tests and by Embree's filter callbacks alike; shadowalpha applies
+// to occlusion queries and defaults to alpha; the factory reads both from textures.
+#include <gtest/gtest.h>
+
+#include "accel/embree/embree_aggregate.h"
+#include "core/rng.h"
+#include "scene/shape_factory.h"
+#include "scene/texture_factory.h"
+#include "shapes/triangle_mesh.h"
+
+namespace candela {
+namespace {
+
+const EmbreeDevice& device() {
+  static EmbreeDevice d;
+  return d;
+}
+
+// Zero where u < 0.5.
+class HalfTexture : public Texture<Float> {
+ public:
+  Float evaluate(const SurfaceInteraction& si) const override { return si.uv.x < 0.5f ? 0 : 1; }
+};
+
+// The unit square at height z as two triangles, (u, v) = (x, y).
+std::unique_ptr<TriangleMesh> square(Float z) {
+  return std::make_unique<TriangleMesh>(
+      Transform(), false, std::vector<int>{0, 1, 2, 0, 2, 3},
+      std::vector<Point3f>{{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}}, std::vector<Normal3f>(),
+      std::vector<Vector3f>(), std::vector<Point2f>{{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+}
+
+struct Scene {
+  std::vector<std::unique_ptr<TriangleMesh>> meshes;
+  std::vector<std::unique_ptr<Shape>> shapes;
+  std::vector<Primitive> primitives;
+  void add(std::unique_ptr<TriangleMesh> m) {
+    for (auto& s : createTriangleShapes(m.get())) {
+      primitives.push_back(Primitive{s.get(), nullptr, nullptr});
+      shapes.push_back(std::move(s));
+    }
+    meshes.push_back(std::move(m));
+  }
+};
+
+TEST(TriangleAlpha, CutOutsInEmbreeAndInTheShape) {
+  HalfTexture half;
+  Scene scene;
+  auto front = square(1);
+  front->alpha = &half;
+  front->shadowAlpha = &half;
+  scene.add(std::move(front));
+  scene.add(square(0));  // opaque, behind
+  EmbreeAggregate agg(device(), scene.primitives);
+  RNG rng(41);
+  int cut = 0;
+  for (int i = 0; i < 2000; ++i) {
+    Float x = rng.uniformFloat(), y = rng.uniformFloat();
+    if (std::abs(x - 0.5f) < 1e-3f) continue;
+    Ray ray(Point3f(x, y, 2), Vector3f(0, 0, -1));
+    SurfaceInteraction si;
+    ASSERT_TRUE(agg.intersect(ray, &si));
+    Float expectedZ = x < 0.5f ? 0 : 1;
+    cut += x < 0.5f;
+    EXPECT_NEAR(si.p.z, expectedZ, 1e-6f) << x << " " << y;
+    // Occlusion of the segment down to z = 0.5: only the solid half of the front square.
+    EXPECT_EQ(agg.intersectP(Ray(Point3f(x, y, 2), Vector3f(0, 0, -1), 1.5f)), x >= 0.5f);
+    // The triangles' own tests agree (on a fresh ray: intersect shortened the first).
+    bool shapeHit = false, shapeOccluded = false;
+    Ray fresh(Point3f(x, y, 2), Vector3f(0, 0, -1));
+    for (size_t k = 0; k < 2; ++k) {
+      Float t;
+      shapeHit |= scene.shapes[k]->intersect(fresh, &t, nullptr);
+      shapeOccluded |= scene.shapes[k]->intersectP(fresh);
+    }
+    EXPECT_EQ(shapeHit, x >= 0.5f);
+    EXPECT_EQ(shapeOccluded, x >= 0.5f);
+  }
+  EXPECT_GT(cut, 800);
+}
+
+TEST(TriangleAlpha, ShadowAlphaOnlyForOcclusion) {
+  HalfTexture half;
+  Scene scene;
+  auto m = square(1);
+  m->shadowAlpha = &half;  // seen by camera rays everywhere, casts a shadow only where u >= 0.5
+  scene.add(std::move(m));
+  EmbreeAggregate agg(device(), scene.primitives);
+  for (Float x : {0.25f, 0.75f}) {
+    Ray ray(Point3f(x, 0.5f, 2), Vector3f(0, 0, -1));
+    SurfaceInteraction si;
+    EXPECT_TRUE(agg.intersect(ray, &si)) << x;
+    EXPECT_EQ(agg.intersectP(Ray(Point3f(x, 0.5f, 2), Vector3f(0, 0, -1))), x > 0.5f) << x;
+  }
+}
+
+ShapeDesc meshDesc() {
+  ShapeDesc d;
+  d.name = "trianglemesh";
+  d.loc = FileLoc{"alpha.pbrt", 2, 1};
+  ParamItem idx;
+  idx.type = ParamType::Integer;
+  idx.name = "indices";
+  idx.typeName = "integer";
+  idx.ints = {0, 1, 2};
+  d.params.add(idx);
+  ParamItem p;
+  p.type = ParamType::Point3;
+  p.name = "P";
+  p.typeName = "point3";
+  p.floats = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  d.params.add(p);
+  return d;
+}
+ParamItem floatItem(const std::string& name, Float v) {
+  ParamItem item;
+  item.type = ParamType::Float;
+  item.name = name;
+  item.typeName = "float";
+  item.floats = {v};
+  return item;
+}
+ParamItem textureItem(const std::string& name, const std::string& tex) {
+  ParamItem item;
+  item.type = ParamType::Texture;
+  item.name = name;
+  item.typeName = "texture";
+  item.strings = {tex};
+  return item;
+}
+
+TEST(TriangleAlpha, FactoryReadsAlphaAndShadowAlpha) {
+  TextureDesc zero;
+  zero.name = "constant";
+  zero.textureName = "zero";
+  zero.type = "float";
+  zero.params.add(floatItem("value", 0));
+  std::vector<TextureDesc> descs = {zero};
+  TextureFactory textures(descs);
+  SurfaceInteraction si;
+
+  // Opaque: no alpha, or alpha 1, needs no test.
+  EXPECT_EQ(createShapes(meshDesc(), Transform(), textures).mesh->alpha, nullptr);
+  ShapeDesc one = meshDesc();
+  one.params.add(floatItem("alpha", 1));
+  CreatedShapes c1 = createShapes(one, Transform(), textures);
+  EXPECT_EQ(c1.mesh->alpha, nullptr);
+  EXPECT_EQ(c1.mesh->shadowAlpha, nullptr);
+  one.params.forEachUnused([](const ParamItem& item) { ADD_FAILURE() << item.name << " unused"; });
+
+  // alpha 0: cut everywhere; shadowalpha defaults to it.
+  ShapeDesc cut = meshDesc();
+  cut.params.add(floatItem("alpha", 0));
+  CreatedShapes c2 = createShapes(cut, Transform(), textures);
+  ASSERT_NE(c2.mesh->alpha, nullptr);
+  EXPECT_EQ(c2.mesh->alpha->evaluate(si), 0);
+  EXPECT_EQ(c2.mesh->shadowAlpha, c2.mesh->alpha);
+  Ray down(Point3f(0.2f, 0.2f, 1), Vector3f(0, 0, -1));
+  Float t;
+  EXPECT_FALSE(c2.shapes[0]->intersect(down, &t, nullptr));
+  EXPECT_FALSE(c2.shapes[0]->intersectP(down));
+
+  // A named texture for alpha, and shadowalpha 1: visible to no camera ray, but casts shadows.
+  ShapeDesc named = meshDesc();
+  named.params.add(textureItem("alpha", "zero"));
+  named.params.add(floatItem("shadowalpha", 1));
+  CreatedShapes c3 = createShapes(named, Transform(), textures);
+  ASSERT_NE(c3.mesh->alpha, nullptr);
+  EXPECT_EQ(c3.mesh->shadowAlpha, nullptr);
+  EXPECT_FALSE(c3.shapes[0]->intersect(down, &t, nullptr));
+  EXPECT_TRUE(c3.shapes[0]->intersectP(down));
+
+  // An unknown texture name is an error at the parameter.
+  ShapeDesc bad = meshDesc();
+  bad.params.add(textureItem("alpha", "nosuch"));
+  EXPECT_THROW(createShapes(bad, Transform(), textures), SceneError);
+}
+
+}  // namespace
+}  // namespace candela
