@@ -171,7 +171,7 @@ RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& optio
                          const EmbreeDevice& device) {
   const WarningSink& warn = options.warn;
   RenderJob job;
-  job.textures = std::make_unique<TextureFactory>(desc.textures);
+  job.textures = std::make_unique<TextureFactory>(desc.textures, options.loadImage, warn);
 
   if (!desc.volumes.empty())
     throw SceneError(desc.volumes.front().loc, "volume regions are not supported yet");
@@ -226,6 +226,7 @@ RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& optio
   job.stats.lights = long(job.lights.size());
   job.stats.materials = long(job.materials.size());
   job.stats.textures = job.textures->texturesCreated();
+  job.textures->releaseImages();  // every texture is made; the MIP maps hold the texels
 
   // The --accel flag wins over the Accelerator statement, whose parameters then do not apply.
   PluginDesc accel = desc.accelerator;

@@ -37,6 +37,9 @@ struct BuildOptions {
   bool quick = false;                  // quarter resolution, an eighth of the samples
   std::string accelerator;             // overrides the Accelerator statement ("" = the scene's)
   WarningSink warn;                    // may be empty
+  // Reads an image texture's file, converted to scene_linear from colorSpace ("" = the default
+  // rule: sRGB for integer pixels, linear for float ones). Empty: image textures are an error.
+  std::function<ImageBuffer(const std::string& path, const std::string& colorSpace)> loadImage;
 };
 
 // What was created, for --stats and for tests that check nothing unneeded was built.
