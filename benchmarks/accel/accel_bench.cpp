@@ -61,10 +61,14 @@ Built build(const std::string& kind, const BenchScene& scene, const EmbreeDevice
   return b;
 }
 
-std::string megabytes(long bytes) {
+// Bytes as KB or MB ("-" when unknown).
+std::string memoryText(long bytes) {
   if (bytes < 0) return "-";
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", bytes / 1048576.0);
+  if (bytes < 1048576)
+    std::snprintf(buf, sizeof buf, "%.1f KB", bytes / 1024.0);
+  else
+    std::snprintf(buf, sizeof buf, "%.1f MB", bytes / 1048576.0);
   return buf;
 }
 
@@ -89,8 +93,10 @@ void runTable(const Options& o, const EmbreeDevice& device) {
          "s,"
          "accounted_bytes,rss_delta_bytes,camera_rays,camera_1t,camera_nt,bounce_rays,bounce_1t,"
          "bounce_nt,shadow_rays,shadow_1t,shadow_nt,threads\n";
-  std::printf("%-18s %-7s %11s %9s %9s | Mrays/s on 1 / %d threads: %-13s %-13s %-13s\n", "scene",
-              "accel", "build cpu s", "MB acct", "MB rss", o.threads, "camera", "bounce", "shadow");
+  std::printf("Mrays/s: 1 thread timed by its CPU clock, %d threads by the wall clock\n",
+              o.threads);
+  std::printf("%-18s %-7s %11s %10s %10s | %-15s %-15s %-15s\n", "scene", "accel", "build cpu s",
+              "accounted", "rss growth", "camera 1/N", "bounce 1/N", "shadow 1/N");
   for (const std::string& name : o.scenes) {
     std::unique_ptr<BenchScene> scene = makeScene(name, device);
     Built reference = build("embree", *scene, device);
@@ -104,9 +110,9 @@ void runTable(const Options& o, const EmbreeDevice& device) {
       for (int w = 0; w < 3; ++w)
         for (int t = 0; t < 2; ++t)
           r[w][t] = trace(*b.aggregate, *sets[w], w == 2, t == 0 ? 1 : o.threads, o.repeats);
-      std::printf("%-18s %-7s %11.3f %9s %9s | %6s / %-6s %6s / %-6s %6s / %-6s\n",
+      std::printf("%-18s %-7s %11.3f %10s %10s | %6s / %-6s %6s / %-6s %6s / %-6s\n",
                   scene->name.c_str(), kind.c_str(), b.cpuSeconds,
-                  megabytes(b.accountedBytes).c_str(), megabytes(b.rssDelta).c_str(),
+                  memoryText(b.accountedBytes).c_str(), memoryText(b.rssDelta).c_str(),
                   mrays(r[0][0].raysPerSecond(rays.camera.size())).c_str(),
                   mrays(r[0][1].raysPerSecond(rays.camera.size())).c_str(),
                   mrays(r[1][0].raysPerSecond(rays.bounce.size())).c_str(),
@@ -134,11 +140,10 @@ void runTable(const Options& o, const EmbreeDevice& device) {
 
 void runScaling(const Options& o, const EmbreeDevice& device) {
   std::ofstream csv(o.scalingCsv);
-  csv << "aggregate,triangles,build_wall_s,build_cpu_s,accounted_bytes,rss_delta_bytes,camera_ns_"
-         "per_ray,"
-         "bounce_ns_per_ray\n";
-  std::printf("\n%-7s %10s %11s %9s %12s %12s   (1 thread)\n", "accel", "triangles", "build cpu s",
-              "MB acct", "camera ns", "bounce ns");
+  csv << "aggregate,triangles,build_wall_s,build_cpu_s,accounted_bytes,rss_delta_bytes,"
+         "camera_ns_per_ray,bounce_ns_per_ray\n";
+  std::printf("\n%-7s %10s %11s %10s %12s %12s   (1 thread)\n", "accel", "triangles", "build cpu s",
+              "accounted", "camera ns", "bounce ns");
   for (long n : o.scalingSizes) {
     std::unique_ptr<BenchScene> scene = makeScene("mesh-" + std::to_string(n), device);
     Built reference = build("embree", *scene, device);
@@ -150,8 +155,8 @@ void runScaling(const Options& o, const EmbreeDevice& device) {
                    double(std::max<size_t>(1, rays.camera.size()));
       double bounce = trace(*b.aggregate, rays.bounce, false, 1, o.repeats).seconds * 1e9 /
                       double(std::max<size_t>(1, rays.bounce.size()));
-      std::printf("%-7s %10ld %11.3f %9s %12.0f %12.0f\n", kind.c_str(), scene->triangles,
-                  b.cpuSeconds, megabytes(b.accountedBytes).c_str(), cam, bounce);
+      std::printf("%-7s %10ld %11.3f %10s %12.0f %12.0f\n", kind.c_str(), scene->triangles,
+                  b.cpuSeconds, memoryText(b.accountedBytes).c_str(), cam, bounce);
       std::fflush(stdout);
       csv << kind << ',' << scene->triangles << ',' << b.seconds << ',' << b.cpuSeconds << ','
           << b.accountedBytes << ',' << b.rssDelta << ',' << cam << ',' << bounce << '\n';
