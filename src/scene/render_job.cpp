@@ -4,8 +4,10 @@
 
 #include "accel/aggregate_factory.h"
 #include "accel/embree/embree_aggregate.h"
+#include "scene/material_factory.h"
 #include "scene/plugin_factories.h"
 #include "scene/shape_factory.h"
+#include "scene/working_color_space.h"
 #include "shapes/triangle_mesh.h"
 
 namespace candela {
@@ -58,30 +60,20 @@ PluginDesc orDefault(const PluginDesc& d, const std::string& name) {
   return r;
 }
 
-// Materials are created once per statement, and only when a shape uses them.
+// Materials are created once per statement, and only when a shape uses them, by the job's
+// MaterialFactory (which also resolves mix's named materials and shares measured tables).
 class MaterialCache {
  public:
-  MaterialCache(const SceneDescription& desc, RenderJob& job, const WarningSink& warn)
-      : desc_(desc), job_(job), warn_(warn) {}
-  const Material* get(int index) {
-    if (auto it = byIndex_.find(index); it != byIndex_.end()) return it->second;
-    std::unique_ptr<Material> m;
-    if (index < 0) {
-      m = createDefaultMaterial(*job_.textures);
-    } else {
-      const MaterialDesc& md = desc_.materials.at(size_t(index));
-      m = createMaterial(md, *job_.textures);
-      reportUnused(md, warn_);
-    }
-    job_.materials.push_back(std::move(m));
-    return byIndex_[index] = job_.materials.back().get();
+  MaterialCache(const SceneDescription& desc, RenderJob& job, const WarningSink& warn) {
+    auto used = [warn](const PluginDesc& d) { reportUnused(d, warn); };
+    job.materialFactory =
+        std::make_unique<MaterialFactory>(desc, *job.textures, &job.materials, used);
+    factory_ = job.materialFactory.get();
   }
+  const Material* get(int index) { return factory_->get(index); }
 
  private:
-  const SceneDescription& desc_;
-  RenderJob& job_;
-  const WarningSink& warn_;
-  std::map<int, const Material*> byIndex_;
+  MaterialFactory* factory_;
 };
 
 // Creates the shapes of sd under objectToWorld and appends their primitives to *out. When
@@ -167,10 +159,16 @@ void addGeometry(const SceneDescription& desc, MaterialCache& materials, RenderJ
 
 }  // namespace
 
-RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& options,
+RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& options,
                          const EmbreeDevice& device) {
-  const WarningSink& warn = options.warn;
   RenderJob job;
+  // Colour parameters converted to the working space once, before anything is created; the job
+  // keeps the converted description alive for the factories that refer to it.
+  if (options.colorMatrix)
+    job.convertedDescription =
+        std::make_unique<SceneDescription>(convertColors(sceneDesc, *options.colorMatrix));
+  const SceneDescription& desc = job.convertedDescription ? *job.convertedDescription : sceneDesc;
+  const WarningSink& warn = options.warn;
   job.textures = std::make_unique<TextureFactory>(desc.textures, options.loadImage, warn);
 
   if (!desc.volumes.empty())
@@ -192,6 +190,11 @@ RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& optio
   job.film = createFilm(filmDesc.name, filmParams,
                         createFilter(filterDesc.name, filterDesc.params, filterDesc.loc),
                         filmDesc.loc, options.cropWindow);
+  job.film->enableAovs(parseAovList(filmParams.getOneString("aovs", ""),
+                                    filmParams.locationOf("aovs", filmDesc.loc)) |
+                       options.aovs);
+  job.exrCompression = filmParams.getOneString("compression", "zip");
+  job.exrHalf = filmParams.getOneBool("half", false);
   reportUnused(filterDesc, warn);
   CameraDesc camDesc = desc.camera;
   if (camDesc.name.empty()) camDesc.name = "perspective";
@@ -220,7 +223,7 @@ RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& optio
   MaterialCache materials(desc, job, warn);
   addGeometry(desc, materials, job, warn);
   for (const LightDesc& ld : desc.lights) {
-    job.lights.push_back(createLight(ld));
+    job.lights.push_back(createLight(ld, options.loadImage));
     reportUnused(ld, warn);
   }
   job.stats.lights = long(job.lights.size());

@@ -3,6 +3,7 @@
 // renderer and integrator hold plain pointers into it.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -26,6 +27,7 @@
 namespace candela {
 
 class EmbreeDevice;
+class MaterialFactory;
 struct TriangleMesh;
 
 using WarningSink = std::function<void(const FileLoc&, const std::string&)>;
@@ -36,7 +38,11 @@ struct BuildOptions {
   std::optional<Bounds2f> cropWindow;  // NDC, overrides the film's
   bool quick = false;                  // quarter resolution, an eighth of the samples
   std::string accelerator;             // overrides the Accelerator statement ("" = the scene's)
-  WarningSink warn;                    // may be empty
+  unsigned aovs = 0;                   // AovFlag bits, added to the Film's "aovs"
+  // scene_linear RGB -> working-space RGB for every colour parameter (--colorspace); none =
+  // identity.
+  std::optional<std::array<Float, 9>> colorMatrix;
+  WarningSink warn;  // may be empty
   // Reads an image texture's file, converted to scene_linear from colorSpace ("" = the default
   // rule: sRGB for integer pixels, linear for float ones). Empty: image textures are an error.
   std::function<ImageBuffer(const std::string& path, const std::string& colorSpace)> loadImage;
@@ -55,11 +61,13 @@ struct BuildStats {
 
 struct RenderJob {
   RenderJob();
+  std::unique_ptr<SceneDescription> convertedDescription;  // set when colours were converted
   ~RenderJob();
   RenderJob(RenderJob&&) noexcept;
   RenderJob& operator=(RenderJob&&) noexcept;
 
   std::unique_ptr<TextureFactory> textures;
+  std::unique_ptr<MaterialFactory> materialFactory;  // lives as long as the materials
   std::vector<std::unique_ptr<Material>> materials;
   std::vector<std::unique_ptr<TriangleMesh>> meshes;
   std::vector<std::unique_ptr<Shape>> shapes;
@@ -68,6 +76,9 @@ struct RenderJob {
   std::unique_ptr<Aggregate> aggregate;
   std::unique_ptr<Scene> scene;
   std::unique_ptr<Film> film;
+  // The Film's output parameters ("compression", "half"); command-line flags override them.
+  std::string exrCompression = "zip";
+  bool exrHalf = false;
   std::unique_ptr<Camera> camera;
   std::unique_ptr<Sampler> sampler;
   std::unique_ptr<SurfaceIntegrator> integrator;
