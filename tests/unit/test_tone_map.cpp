@@ -65,7 +65,21 @@ TEST(ToneMap, HighContrastCapacityIsContinuousWithNaturalLogs) {
   };
   for (int x = 1; x < 256; ++x) EXPECT_GE(lum(x), lum(x - 1) * (1 - 1e-4f)) << x;
   EXPECT_LT(lum(0), 0.05);
-  EXPECT_NEAR(lum(255), 1, 0.1);
+
+  // Two uniform halves: far from their border every window the operator tries is uniform, so
+  // the adaptation luminance is the pixel's own and the capacity curve maps the dimmest to 0 and
+  // the brightest to display white exactly.
+  ImageBuffer halves(512, 4, {"R", "G", "B"});
+  for (int yy = 0; yy < 4; ++yy)
+    for (int x = 0; x < 512; ++x)
+      for (int c = 0; c < 3; ++c) halves.at(x, yy, c) = x < 256 ? 0.001f : 0.5f;
+  applyToneMap(halves, "highcontrast", ParamSet(), FileLoc{});
+  auto lumH = [&](int x) {
+    return 0.212671f * halves.at(x, 1, 0) + 0.715160f * halves.at(x, 1, 1) +
+           0.072169f * halves.at(x, 1, 2);
+  };
+  EXPECT_NEAR(lumH(20), 0, 1e-6);
+  EXPECT_NEAR(lumH(490), 1, 1e-4);
 }
 
 TEST(ToneMap, UnknownNameIsAnErrorListingTheOperators) {
