@@ -17,28 +17,41 @@ Float BxDF::pdf(const Vector3f& wo, const Vector3f& wi) const {
   return sameHemisphere(wo, wi) ? absCosTheta(wi) * kInvPi : 0;
 }
 
+namespace {
+// Sums in double: thousands of float additions would lose ~1e-4 of the result.
+struct SpectrumSum {
+  double v[3] = {0, 0, 0};
+  void add(const Spectrum& s) {
+    for (int c = 0; c < 3; ++c) v[c] += s[c];
+  }
+  Spectrum mean(double scale) const {
+    return {Float(v[0] * scale), Float(v[1] * scale), Float(v[2] * scale)};
+  }
+};
+}  // namespace
+
 Spectrum BxDF::rho(const Vector3f& wo, std::span<const Point2f> u) const {
-  Spectrum sum(0);
+  SpectrumSum sum;
   for (const Point2f& s : u) {
     Vector3f wi;
     Float p = 0;
     Spectrum f = sampleF(wo, &wi, s, &p);
-    if (p > 0) sum += f * (absCosTheta(wi) / p);
+    if (p > 0) sum.add(f * (absCosTheta(wi) / p));
   }
-  return u.empty() ? sum : sum / Float(u.size());
+  return sum.mean(u.empty() ? 0 : 1.0 / double(u.size()));
 }
 
 Spectrum BxDF::rho(std::span<const Point2f> u1, std::span<const Point2f> u2) const {
   // rho_hh = (1/pi) integral integral f |cos theta_o| |cos theta_i| dwo dwi.
-  Spectrum sum(0);
+  SpectrumSum sum;
   size_t n = std::min(u1.size(), u2.size());
   for (size_t i = 0; i < n; ++i) {
     Vector3f wo = sampleUniformHemisphere(u1[i]), wi;
     Float pdfO = uniformHemispherePdf(), pdfI = 0;
     Spectrum f = sampleF(wo, &wi, u2[i], &pdfI);
-    if (pdfI > 0) sum += f * (absCosTheta(wi) * absCosTheta(wo) / (pdfO * pdfI));
+    if (pdfI > 0) sum.add(f * (absCosTheta(wi) * absCosTheta(wo) / (pdfO * pdfI)));
   }
-  return n == 0 ? sum : sum / (kPi * Float(n));
+  return sum.mean(n == 0 ? 0 : 1.0 / (M_PI * double(n)));
 }
 
 std::vector<Point2f> stratifiedSamples2D(int n, RNG& rng) {

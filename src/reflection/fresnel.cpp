@@ -15,10 +15,12 @@ Float fresnelDielectric(Float cosThetaI, Float etaOutside, Float etaInside) {
     std::swap(etaI, etaT);
     cosI = -cosI;
   }
-  // Snell's law; sin theta_t >= 1 is total internal reflection.
-  Float sinT = etaI / etaT * safeSqrt(1 - cosI * cosI);
-  if (sinT >= 1) return 1;
-  Float cosT = safeSqrt(1 - sinT * sinT);
+  // Snell's law; sin theta_t >= 1 is total internal reflection. SpecularTransmission decides
+  // with the same arithmetic, so that the two agree exactly at the critical angle.
+  Float eta = etaI / etaT;
+  Float sin2T = eta * eta * std::max(Float(0), 1 - cosI * cosI);
+  if (sin2T >= 1) return 1;
+  Float cosT = std::sqrt(1 - sin2T);
   return frDielectric(cosI, cosT, etaI, etaT);
 }
 

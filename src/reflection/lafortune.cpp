@@ -42,14 +42,17 @@ bool Lafortune::samplingLobes(const Vector3f& wo, SamplingLobe* out, Float* diff
   *count = 0;
   for (const LafortuneLobe& l : lobes_) {
     if (*count == kMaxSampledLobes) break;
-    // Channel-averaged lobe: (|C wo| cos alpha)^e around axis C wo / |C wo|, whose integral over
-    // the sphere is |C wo|^e 2 pi / (e + 1), the weight used for choosing it.
+    // Channel-averaged lobe: (|C wo| cos alpha)^e around axis C wo / |C wo|. Its weight is its
+    // peak over wo's hemisphere (where the axis is closest to it: the axis itself, or the
+    // horizon when the axis points to the other side) times the lobe's solid angle
+    // 2 pi / (e + 1): fit lobes aimed below the surface (clay's first) are then rarely drawn.
     Vector3f c(l.cx.average() * wo.x, l.cy.average() * wo.y, l.cz.average() * wo.z);
     Float len = c.length(), e = std::max(Float(0), l.exponent.average());
     SamplingLobe& s = out[*count];
     s.axis = len > 0 ? c / len : Vector3f(0, 0, 1);
     s.exponent = e;
-    s.weight = len > 0 ? std::min(Float(1e30), std::pow(len, e) * 2 * kPi / (e + 1)) : 0;
+    Float reach = s.axis.z * wo.z >= 0 ? 1 : sinTheta(s.axis);
+    s.weight = len > 0 ? std::min(Float(1e30), std::pow(len * reach, e) * 2 * kPi / (e + 1)) : 0;
     total += s.weight;
     ++*count;
   }

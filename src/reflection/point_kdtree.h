@@ -1,6 +1,7 @@
 // A static kd-tree over points in R^D answering k-nearest-neighbour queries, for looking up
 // irregularly sampled measured BRDFs (pbrt-v2's "measured" material keeps its samples in one).
-// The tree is implicit: each range of the index permutation stores its median at the middle.
+// The tree is implicit: each range of the index permutation stores its median at the middle, down
+// to small leaf ranges.
 #pragma once
 
 #include <algorithm>
@@ -23,15 +24,20 @@ class PointKdTree {
     axis_.resize(points_.size());
     for (size_t i = 0; i < order_.size(); ++i) order_[i] = uint32_t(i);
     build(0, int(order_.size()));
+    // Store the points in tree order so that a search walks memory mostly forwards.
+    std::vector<Point> sorted(points_.size());
+    for (size_t i = 0; i < order_.size(); ++i) sorted[i] = points_[order_[i]];
+    points_ = std::move(sorted);
   }
   size_t size() const { return points_.size(); }
-  const Point& point(size_t i) const { return points_[i]; }
 
   // The up to k nearest points to q: their indices (in construction order) and squared
   // distances, nearest first. Returns how many were found (min(k, size())).
   int nearest(const Point& q, int k, uint32_t* indices, Float* dist2) const {
     int found = 0;
-    if (k > 0) search(0, int(order_.size()), q, k, indices, dist2, &found);
+    Point off;
+    off.fill(0);
+    if (k > 0) search(0, int(order_.size()), q, 0, off, k, indices, dist2, &found);
     return found;
   }
 
@@ -42,8 +48,11 @@ class PointKdTree {
     return d;
   }
 
+  // Ranges this small are leaves, scanned linearly: cheaper than recursing to single points.
+  static constexpr int kLeafSize = 8;
+
   void build(int lo, int hi) {
-    if (hi - lo < 1) return;
+    if (hi - lo <= kLeafSize) return;
     // Split on the axis of largest extent.
     Point lower, upper;
     lower.fill(kInfinity);
@@ -77,21 +86,29 @@ class PointKdTree {
     indices[i] = index;
   }
 
-  void search(int lo, int hi, const Point& q, int k, uint32_t* indices, Float* dist2,
-              int* found) const {
-    if (hi <= lo) return;
+  // rd is the squared distance from q to the current range's cell, kept incrementally from the
+  // per-axis offsets off (Arya and Mount 1993): a far cell is pruned by its box, not only by its
+  // splitting plane, which matters in more than two or three dimensions.
+  void search(int lo, int hi, const Point& q, Float rd, Point& off, int k, uint32_t* indices,
+              Float* dist2, int* found) const {
+    if (hi - lo <= kLeafSize) {
+      for (int i = lo; i < hi; ++i)
+        insert(order_[i], distance2(q, points_[i]), k, indices, dist2, found);
+      return;
+    }
     int mid = (lo + hi) / 2;
-    uint32_t p = order_[mid];
-    insert(p, distance2(q, points_[p]), k, indices, dist2, found);
+    insert(order_[mid], distance2(q, points_[mid]), k, indices, dist2, found);
     int axis = axis_[mid];
-    Float diff = q[axis] - points_[p][axis];
-    if (diff < 0) {
-      search(lo, mid, q, k, indices, dist2, found);
-      if (*found < k || diff * diff < dist2[k - 1])
-        search(mid + 1, hi, q, k, indices, dist2, found);
-    } else {
-      search(mid + 1, hi, q, k, indices, dist2, found);
-      if (*found < k || diff * diff < dist2[k - 1]) search(lo, mid, q, k, indices, dist2, found);
+    Float diff = q[axis] - points_[mid][axis];
+    int nearLo = diff < 0 ? lo : mid + 1, nearHi = diff < 0 ? mid : hi;
+    int farLo = diff < 0 ? mid + 1 : lo, farHi = diff < 0 ? hi : mid;
+    search(nearLo, nearHi, q, rd, off, k, indices, dist2, found);
+    Float old = off[axis];
+    Float farRd = rd - old * old + diff * diff;
+    if (*found < k || farRd < dist2[k - 1]) {
+      off[axis] = diff;
+      search(farLo, farHi, q, farRd, off, k, indices, dist2, found);
+      off[axis] = old;
     }
   }
 

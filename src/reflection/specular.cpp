@@ -23,8 +23,9 @@ bool SpecularTransmission::refract(const Vector3f& wo, Vector3f* wi, Float* etaR
   Float etaO = entering ? fresnel_.etaOutside() : fresnel_.etaInside();
   Float etaI = entering ? fresnel_.etaInside() : fresnel_.etaOutside();
   Float eta = etaO / etaI;
-  // Snell's law: eta_o sin theta_o = eta_i sin theta_i.
-  Float sin2I = eta * eta * sin2Theta(wo);
+  // Snell's law: eta_o sin theta_o = eta_i sin theta_i, with the arithmetic of
+  // fresnelDielectric so that both see total internal reflection at the same angles.
+  Float sin2I = eta * eta * std::max(Float(0), 1 - wo.z * wo.z);
   if (sin2I >= 1 || wo.z == 0) return false;
   Float cosI = std::sqrt(1 - sin2I);
   *wi = Vector3f(-eta * wo.x, -eta * wo.y, entering ? -cosI : cosI);

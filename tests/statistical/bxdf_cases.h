@@ -198,4 +198,48 @@ inline std::vector<BxDFCase> sampledCases(bool full) {
   return cases;
 }
 
+// A BSDF (several components, a shading frame not aligned with the world axes) and the world-space
+// outgoing direction to test.
+struct BSDFCase {
+  std::string name;
+  std::shared_ptr<MemoryArena> arena;
+  const BSDF* bsdf = nullptr;
+  Vector3f wo;
+};
+
+inline std::vector<BSDFCase> bsdfCases() {
+  std::vector<BSDFCase> cases;
+  auto add = [&](std::string name, double thetaDeg, double phiDeg,
+                 const std::function<void(MemoryArena&, BSDF*)>& fill) {
+    BSDFCase c;
+    c.name = std::move(name);
+    c.arena = std::make_shared<MemoryArena>();
+    SurfaceInteraction si;
+    Vector3f n = normalize(Vector3f(0.3f, -0.2f, 1));
+    si.n = si.shading.n = Normal3f(n.x, n.y, n.z);
+    si.shading.dpdu = Vector3f(1, 0.5f, 0);
+    BSDF* b = c.arena->make<BSDF>(si);
+    fill(*c.arena, b);
+    c.bsdf = b;
+    c.wo = b->localToWorld(direction(thetaDeg, phiDeg));
+    cases.push_back(std::move(c));
+  };
+  add("Plastic_60", 60, 30, [](MemoryArena& a, BSDF* b) {
+    b->add(a.make<LambertianReflection>(Spectrum(0.5f)));
+    b->add(blinnMicrofacet(a, 100, a.make<FresnelDielectric>(1.f, 1.5f)));
+  });
+  add("GlassWithDiffuse_20", 20, 0, [](MemoryArena& a, BSDF* b) {
+    b->add(a.make<SpecularReflection>(Spectrum(1), a.make<FresnelDielectric>(1.f, 1.5f)));
+    b->add(a.make<SpecularTransmission>(Spectrum(1), 1.f, 1.5f));
+    b->add(a.make<LambertianReflection>(Spectrum(0.5f)));
+  });
+  add("Translucent_below_130", 130, 60, [](MemoryArena& a, BSDF* b) {
+    b->add(a.make<LambertianReflection>(Spectrum(0.3f)));
+    b->add(a.make<BRDFToBTDF>(a.make<LambertianReflection>(Spectrum(0.3f))));
+    b->add(blinnMicrofacet(a, 10));
+    b->add(a.make<BRDFToBTDF>(blinnMicrofacet(a, 40)));
+  });
+  return cases;
+}
+
 }  // namespace candela::testcases

@@ -65,16 +65,58 @@ std::string caseName(const std::string& s) {
   return out;
 }
 
+const std::vector<testcases::BSDFCase>& bsdfCases() {
+  static const std::vector<testcases::BSDFCase> cases = testcases::bsdfCases();
+  return cases;
+}
+// The every-run family: the BxDF cases and the BSDF cases share one Sidak correction.
+int normalFamilySize() { return int(normalCases().size() + bsdfCases().size()); }
+
 class BxDFChiSquare : public testing::TestWithParam<int> {};
 
 TEST_P(BxDFChiSquare, SamplesFollowPdf) {
   const auto& cases = normalCases();
-  checkCase(cases[GetParam()], int(cases.size()), 1000 + uint64_t(GetParam()));
+  checkCase(cases[GetParam()], normalFamilySize(), 1000 + uint64_t(GetParam()));
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, BxDFChiSquare, testing::Range(0, int(normalCases().size())),
                          [](const testing::TestParamInfo<int>& i) {
                            return caseName(normalCases()[i.param].name);
+                         });
+
+// BSDF::sampleF picks a component with u0 and returns the mixture's value and pdf; picks of a
+// specular component are delta samples, outside what pdf() describes (the failed-sample cell).
+class BSDFChiSquare : public testing::TestWithParam<int> {};
+
+TEST_P(BSDFChiSquare, SamplesFollowPdf) {
+  const testcases::BSDFCase& c = bsdfCases()[GetParam()];
+  const BSDF& b = *c.bsdf;
+  int64_t pdfMismatch = 0, fMismatch = 0;
+  stats::DirectionDraw draw = [&](Float u0, const Point2f& u, Vector3f* wi) {
+    Float pdf = 0;
+    BxDFType type;
+    Spectrum f = b.sampleF(c.wo, wi, u0, u, &pdf, kAllBxDF, &type);
+    if (pdf == 0 || (type & kSpecular)) return false;
+    if (!close(pdf, b.pdf(c.wo, *wi), 1e-3)) ++pdfMismatch;
+    Spectrum fe = b.f(c.wo, *wi);
+    for (int k = 0; k < 3; ++k)
+      if (!close(f[k], fe[k], 1e-3)) ++fMismatch;
+    return true;
+  };
+  // The histogram is over world directions; the pdf takes them as they are.
+  auto pdf = [&](const Vector3f& wi) { return double(b.pdf(c.wo, wi)); };
+  stats::FitResult r = stats::chiSquareFit(draw, pdf, kSamples, 3000 + uint64_t(GetParam()));
+  EXPECT_GT(r.pValue, stats::sidak(kSuiteAlpha, normalFamilySize()))
+      << c.name << ": " << r.summary();
+  EXPECT_EQ(pdfMismatch, 0) << c.name;
+  EXPECT_EQ(fMismatch, 0) << c.name;
+  EXPECT_NEAR(r.pdfIntegral, 1 - double(r.failed) / double(r.samples), 0.01) << r.summary();
+  if (getenv("CANDELA_VERBOSE_STATS")) std::cout << c.name << ": " << r.summary() << "\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, BSDFChiSquare, testing::Range(0, int(bsdfCases().size())),
+                         [](const testing::TestParamInfo<int>& i) {
+                           return caseName(bsdfCases()[i.param].name);
                          });
 
 // The full sweep: ~200 cases, about a minute.
