@@ -35,11 +35,14 @@ bool close(double a, double b, double rel) {
 
 void checkCase(const BxDFCase& c, int casesInSuite, uint64_t seed) {
   const BxDF& b = *c.bxdf;
-  int64_t pdfMismatch = 0, fMismatch = 0;
+  int64_t pdfMismatch = 0, fMismatch = 0, drawn = 0;
   stats::DirectionDraw draw = [&](Float, const Point2f& u, Vector3f* wi) {
     Float pdf = 0;
     Spectrum f = b.sampleF(c.wo, wi, u, &pdf);
     if (pdf == 0) return false;
+    // Every 8th sample is checked: 125k checks, at an eighth of the cost of measured BRDFs'
+    // lookups.
+    if (drawn++ % 8 != 0) return true;
     // Float rounding of the two code paths: a relative 1e-3 is far above it.
     if (!close(pdf, b.pdf(c.wo, *wi), 1e-3)) ++pdfMismatch;
     Spectrum fe = b.f(c.wo, *wi);
