@@ -1,0 +1,160 @@
+#include "shapes/loop_subdiv.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace candela {
+
+namespace {
+
+// Weighted sums in double: four levels of masks and the limit stay well inside float's precision.
+struct Sum {
+  double x = 0, y = 0, z = 0;
+  void add(const Point3f& p, double w) { x += w * p.x, y += w * p.y, z += w * p.z; }
+  Point3f point() const { return Point3f(Float(x), Float(y), Float(z)); }
+  Vector3f vector() const { return Vector3f(Float(x), Float(y), Float(z)); }
+};
+
+}  // namespace
+
+double loopBeta(int n, LoopRules::Beta beta) {
+  if (beta == LoopRules::Warren) return n == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * n);
+  double c = 3.0 / 8.0 + std::cos(2 * std::numbers::pi / n) / 4.0;
+  return (5.0 / 8.0 - c * c) / n;
+}
+
+double loopLimitGamma(int n, LoopRules::Beta beta) {
+  return 1.0 / (n + 3.0 / (8.0 * loopBeta(n, beta)));
+}
+
+LoopMesh refineLoopOnce(const LoopMesh& mesh, const LoopTopology& t, const LoopRules& rules) {
+  int nv = int(mesh.p.size());
+  LoopMesh out;
+  out.p.resize(nv + t.edges.size());
+  // Even vertices (draft §3.7): inside (1 − nβ) v + β Σ ring; on a boundary (3/4) v + (1/8) (the
+  // two boundary neighbours), which ignores the interior and so keeps boundaries shared.
+  for (int v = 0; v < nv; ++v) {
+    const std::vector<int>& ring = t.rings[v];
+    Sum s;
+    if (ring.empty()) {
+      s.add(mesh.p[v], 1);
+    } else if (t.boundary[v]) {
+      s.add(mesh.p[v], 0.75);
+      s.add(mesh.p[ring.front()], 0.125);
+      s.add(mesh.p[ring.back()], 0.125);
+    } else {
+      int n = int(ring.size());
+      double b = loopBeta(n, rules.beta);
+      s.add(mesh.p[v], 1 - n * b);
+      for (int r : ring) s.add(mesh.p[r], b);
+    }
+    out.p[v] = s.point();
+  }
+  // Odd vertices: inside (3/8) the ends + (1/8) the two opposite vertices; on a boundary the
+  // midpoint.
+  for (size_t e = 0; e < t.edges.size(); ++e) {
+    const LoopTopology::Edge& edge = t.edges[e];
+    Sum s;
+    if (edge.f[1] == -1) {
+      s.add(mesh.p[edge.v[0]], 0.5);
+      s.add(mesh.p[edge.v[1]], 0.5);
+    } else {
+      s.add(mesh.p[edge.v[0]], 0.375);
+      s.add(mesh.p[edge.v[1]], 0.375);
+      s.add(mesh.p[t.opposite(mesh, edge.f[0], int(e))], 0.125);
+      s.add(mesh.p[t.opposite(mesh, edge.f[1], int(e))], 0.125);
+    }
+    out.p[nv + e] = s.point();
+  }
+  // The 4-way split; each child keeps its parent's winding.
+  out.indices.reserve(4 * mesh.indices.size());
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const int* v = &mesh.indices[3 * f];
+    int m0 = nv + t.faceEdges[3 * f], m1 = nv + t.faceEdges[3 * f + 1],
+        m2 = nv + t.faceEdges[3 * f + 2];
+    for (int i : {v[0], m0, m2, v[1], m1, m0, v[2], m2, m1, m0, m1, m2}) out.indices.push_back(i);
+  }
+  return out;
+}
+
+LoopMesh refineLoop(const LoopMesh& control, int levels, const LoopRules& rules, const FileLoc& loc,
+                    const std::string& shapeName) {
+  LoopTopology t = buildLoopTopology(control, loc, shapeName);
+  LoopMesh mesh = control;
+  for (int level = 0; level < levels; ++level) {
+    mesh = refineLoopOnce(mesh, t, rules);
+    if (level + 1 < levels) t = buildLoopTopology(mesh, loc, shapeName);
+  }
+  return mesh;
+}
+
+namespace {
+
+// The transverse limit tangent at a boundary vertex whose ring has n vertices (valence n in the
+// draft: faces + 1), ring[0] and ring[n − 1] on the boundary; it points into the surface (draft
+// §3.7, after Hoppe et al. 1994).
+Vector3f boundaryTransverse(const LoopMesh& mesh, int v, const std::vector<int>& ring) {
+  int n = int(ring.size());
+  auto P = [&](int k) { return mesh.p[ring[k]]; };
+  Sum s;
+  if (n == 2) {
+    s.add(P(0), 1), s.add(P(1), 1), s.add(mesh.p[v], -2);
+  } else if (n == 3) {
+    s.add(P(1), 1), s.add(mesh.p[v], -1);
+  } else if (n == 4) {
+    s.add(P(0), -1), s.add(P(1), 2), s.add(P(2), 2), s.add(P(3), -1), s.add(mesh.p[v], -2);
+  } else {
+    double theta = std::numbers::pi / (n - 1);
+    s.add(P(0), -std::sin(theta));
+    s.add(P(n - 1), -std::sin(theta));
+    for (int k = 1; k <= n - 2; ++k) s.add(P(k), -(2 * std::cos(theta) - 2) * std::sin(k * theta));
+  }
+  return s.vector();
+}
+
+}  // namespace
+
+LoopLimit loopLimit(const LoopMesh& mesh, const LoopTopology& t, const LoopRules& rules) {
+  int nv = int(mesh.p.size());
+  LoopLimit out;
+  out.p.resize(nv);
+  out.n.resize(nv);
+  for (int v = 0; v < nv; ++v) {
+    const std::vector<int>& ring = t.rings[v];
+    int n = int(ring.size());
+    if (ring.empty()) {
+      out.p[v] = mesh.p[v];
+      continue;
+    }
+    Sum p;
+    Vector3f normal;
+    if (t.boundary[v]) {
+      double side = rules.boundaryLimit == LoopRules::Book ? 0.2 : 1.0 / 6.0;
+      p.add(mesh.p[v], 1 - 2 * side);
+      p.add(mesh.p[ring.front()], side);
+      p.add(mesh.p[ring.back()], side);
+      // Along the boundary, last − first, points clockwise seen from the winding's side, so the
+      // normal is transverse × along.
+      Vector3f along = mesh.p[ring.back()] - mesh.p[ring.front()];
+      normal = cross(boundaryTransverse(mesh, v, ring), along);
+    } else {
+      double g = loopLimitGamma(n, rules.beta);
+      p.add(mesh.p[v], 1 - n * g);
+      // S and T weigh the counter-clockwise ring by cos and sin: S × T follows the winding.
+      Sum s, tt;
+      for (int k = 0; k < n; ++k) {
+        p.add(mesh.p[ring[k]], g);
+        double a = 2 * std::numbers::pi * k / n;
+        s.add(mesh.p[ring[k]], std::cos(a));
+        tt.add(mesh.p[ring[k]], std::sin(a));
+      }
+      normal = cross(s.vector(), tt.vector());
+    }
+    out.p[v] = p.point();
+    Float len = normal.length();
+    if (len > 0) out.n[v] = Normal3f(normal / len);
+  }
+  return out;
+}
+
+}  // namespace candela

@@ -1,0 +1,46 @@
+// Mesh topology for Loop subdivision (lrt draft §3.7, seed 000 inventory §3 "subdiv"): the edges
+// with the faces on either side, and each vertex's ordered one-ring. Built from an index list
+// alone, after checking that the mesh is one the rules apply to: a consistently oriented
+// manifold triangle mesh, open or closed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/vector.h"
+
+namespace candela {
+
+// A triangle mesh: three indices into p per face.
+struct LoopMesh {
+  std::vector<Point3f> p;
+  std::vector<int> indices;
+  int faceCount() const { return int(indices.size() / 3); }
+};
+
+struct LoopTopology {
+  struct Edge {
+    int v[2];  // v[0] < v[1]
+    int f[2];  // the faces on either side; f[1] = -1 on a boundary
+  };
+  std::vector<Edge> edges;
+  // Three per face: faceEdges[3 f + i] is the edge from corner i to corner i + 1.
+  std::vector<int> faceEdges;
+  // Per vertex, the neighbours in counter-clockwise order (as the faces wind). On a boundary the
+  // first and last are the neighbours along the boundary, and the ring has one more vertex than
+  // the vertex has faces; inside, one per face. Empty for a vertex no face uses.
+  std::vector<std::vector<int>> rings;
+  std::vector<char> boundary;  // per vertex
+
+  // The vertex of face f that is on neither end of edge e (e must be an edge of f).
+  int opposite(const LoopMesh& mesh, int f, int e) const;
+};
+
+// Throws SceneError at loc, naming shapeName and the face, when an index is out of range, a face
+// repeats a vertex, an edge has more than two faces, two faces sharing an edge wind it the same
+// way (inconsistent orientation), or a vertex's faces do not form a single fan (non-manifold).
+LoopTopology buildLoopTopology(const LoopMesh& mesh, const FileLoc& loc,
+                               const std::string& shapeName);
+
+}  // namespace candela
