@@ -9,6 +9,7 @@
 #include "shapes/disk.h"
 #include "shapes/heightfield.h"
 #include "shapes/hyperboloid.h"
+#include "shapes/loop_subdiv_shape.h"
 #include "shapes/paraboloid.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
@@ -61,6 +62,9 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
   } else if (desc.name == "trianglemesh") {
     out.shapes = createTriangleMeshShapes(objectToWorld, desc.reverseOrientation, desc.params,
                                           &out.mesh, desc.loc);
+  } else if (desc.name == "loopsubdiv") {
+    out.shapes = createLoopSubdivShapes(objectToWorld, desc.reverseOrientation, desc.params,
+                                        &out.mesh, desc.loc);
   } else if (desc.name == "plymesh") {
     std::string dir = std::filesystem::path(desc.loc.file).parent_path().string();
     out.shapes = createPlyMeshShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh,
@@ -68,7 +72,7 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
   } else {
     throwUnknownPlugin(desc.loc, "shape", desc.name,
                        {"sphere", "cylinder", "disk", "cone", "paraboloid", "hyperboloid",
-                        "heightfield", "trianglemesh", "plymesh"});
+                        "heightfield", "trianglemesh", "plymesh", "loopsubdiv"});
   }
   return out;
 }
