@@ -168,6 +168,7 @@ inline std::vector<BxDFCase> sampledCases(bool full) {
   // models, also with a dielectric seen from inside) below the surface.
   const double thetas[] = {0, 10, 30, 50, 70, 85, 89.9};
   const Float roughness[] = {1e-3f, 1e-2f, 0.1f, 0.3f, 1};
+  const Float etas[] = {1.0001f, 1.333f, 1.5f, 2.42f, 10};
   for (double t : thetas) {
     std::string ts = std::to_string(int(t * 10));
     add(cat("Lambertian_", ts), direction(t),
@@ -177,13 +178,17 @@ inline std::vector<BxDFCase> sampledCases(bool full) {
     add(cat("Clay_", ts), direction(t, 15), [](MemoryArena& a) { return clay(a); });
     add(cat("MERL_", ts), direction(t, 5),
         [](MemoryArena& a) { return a.make<MeasuredBRDF>(&syntheticMerlTable()); });
-    for (Float r : roughness) {
+    for (int ri = 0; ri < 5; ++ri) {
+      Float r = roughness[ri];
       std::string rs = cat("r", int(std::round(-std::log10(r) * 10)));
       add(cat("Blinn_", rs, "_", ts), direction(t, 25),
           [r](MemoryArena& a) { return blinnMicrofacet(a, 1 / r); });
-      add(cat("Blinn_inside_", rs, "_", ts), direction(180 - t, 25), [r](MemoryArena& a) {
-        return blinnMicrofacet(a, 1 / r, a.make<FresnelDielectric>(1.f, 1.5f));
-      });
+      // Inside a dielectric; eta (only in f, which the draws check against f()) cycles with r.
+      Float eta = etas[ri];
+      add(cat("Blinn_inside_", rs, "_eta", eta, "_", ts), direction(180 - t, 25),
+          [r, eta](MemoryArena& a) {
+            return blinnMicrofacet(a, 1 / r, a.make<FresnelDielectric>(1.f, eta));
+          });
       add(cat("Aniso_", rs, "_", ts), direction(t, 35),
           [r](MemoryArena& a) { return anisoMicrofacet(a, 1 / r, 0.1f / r); });
       add(cat("FresnelBlend_", rs, "_", ts), direction(t, 50), [r](MemoryArena& a) {
