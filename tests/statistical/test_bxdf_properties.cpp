@@ -91,6 +91,16 @@ TEST(BxDFProperties, BRDFsAreReciprocal) {
   }
 }
 
+// The draft's Oren-Nayar is the qualitative model, which is not exactly energy conserving: with
+// R = 1 its albedo exceeds 1 near grazing incidence for small sigma. By quadrature of the formula
+// over (sigma, theta_o): at most 1.0151 (sigma 12 degrees, theta_o -> 90), 1.0063 at sigma 5,
+// below 1 for sigma >= 20 at every angle and for every sigma up to theta_o = 60 degrees. The
+// allowance is that known excess, no more, and only where it occurs.
+double orenNayarExcess(double sigmaDeg, double thetaDeg) {
+  if (sigmaDeg <= 0 || sigmaDeg >= 20 || thetaDeg <= 60) return 0;
+  return 0.016;
+}
+
 // The albedo sweep over the parameters the issue names: roughness 1e-3..1, Fresnel of
 // dielectrics with eta 1.0001..10 from outside and inside, a conductor, none; incidence from the
 // normal to 89.9 degrees. Every run takes a corner subset; the Long suite the whole grid.
@@ -120,13 +130,14 @@ void albedoSweep(bool full) {
                         false, true});
   double worst = 0;
   std::string worstName;
-  auto check = [&](const std::string& name, const BxDF& b, const Vector3f& wo, int channels) {
+  auto check = [&](const std::string& name, const BxDF& b, const Vector3f& wo, int channels,
+                   double excess = 0) {
     for (int ch = 0; ch < channels; ++ch) {
-      double rho = albedo(b, wo, ch);
+      double rho = albedo(b, wo, ch) - excess;
       // 1e-4: the quadrature's tolerance, far below any physical excess.
       EXPECT_LE(rho, 1 + 1e-4) << name << " channel " << ch;
       EXPECT_GE(rho, 0) << name;
-      if (rho > worst) worst = rho, worstName = name;
+      if (rho + excess > worst) worst = rho + excess, worstName = name;
     }
   };
   for (double t : thetas) {
@@ -157,13 +168,24 @@ void albedoSweep(bool full) {
         check(testcases::cat("FresnelBlendAniso_", tag),
               FresnelBlend(Spectrum(rd), Spectrum(rs), &aniso), wo, 1);
       }
-    for (Float sigma : full ? std::vector<Float>{0, 10, 30, 60, 90} : std::vector<Float>{20, 90})
-      check(testcases::cat("OrenNayar_", sigma, "_theta", t), OrenNayar(Spectrum(1), sigma), wo, 1);
+    for (Float sigma :
+         full ? std::vector<Float>{0, 5, 10, 12, 15, 20, 30, 60, 90} : std::vector<Float>{20, 90})
+      check(testcases::cat("OrenNayar_", sigma, "_theta", t), OrenNayar(Spectrum(1), sigma), wo, 1,
+            orenNayarExcess(sigma, t));
     LafortuneFit clay = *lafortuneFit("clay");
     check(testcases::cat("Clay_theta", t), Lafortune(clay.diffuse, clay.lobes), wo, 3);
     check(testcases::cat("Lambertian_theta", t), LambertianReflection(Spectrum(1)), wo, 1);
   }
   std::cout << std::setprecision(8) << "largest albedo " << worst << " (" << worstName << ")\n";
+}
+
+TEST(BxDFProperties, OrenNayarAlbedoMatchesAnIndependentQuadrature) {
+  // Albedo of the qualitative model with R = 1, integrated separately in (theta_i) with the phi
+  // integral of max(0, cos) done by hand (2): sigma 10 at 89.9 degrees exceeds 1 (the model's
+  // known excess), sigma 20 at 60 and sigma 45 at 30 do not.
+  EXPECT_NEAR(albedo(OrenNayar(Spectrum(1), 10), direction(89.9)), 1.014580, 2e-4);
+  EXPECT_NEAR(albedo(OrenNayar(Spectrum(1), 20), direction(60)), 0.942331, 2e-4);
+  EXPECT_NEAR(albedo(OrenNayar(Spectrum(1), 45), direction(30)), 0.722023, 2e-4);
 }
 
 TEST(BxDFProperties, AlbedoAtMostOne) { albedoSweep(false); }
