@@ -31,6 +31,10 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   const int spp = sampler_.samplesPerPixel();
   const int s0 = std::max(0, options.firstSample);
   const int s1 = options.endSample < 0 ? spp : std::min(options.endSample, spp);
+  // Adaptive samplers take their extra samples only where the first ones disagree; progressive
+  // passes (a partial sample range) take every sample instead.
+  const int initial = std::clamp(sampler_.initialSamplesPerPixel(), 1, spp);
+  const bool adaptive = initial < spp && s0 == 0 && s1 == spp;
   // Offset rays one pixel over are too far apart when a pixel gets many samples (pbrt 3e §1.4.3).
   const Float differentialScale = 1 / std::sqrt(Float(std::max(1, spp)));
 
@@ -47,29 +51,50 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     int tx = tileIndex % nx, ty = tileIndex / nx;
     int x0 = bounds.pMin.x + tx * tile, y0 = bounds.pMin.y + ty * tile;
     int x1 = std::min(x0 + tile, bounds.pMax.x), y1 = std::min(y0 + tile, bounds.pMax.y);
+    // One sample: traced, added to the film, and reported for adaptive sampling's decision.
+    auto takeSample = [&](const Point2i& pixel, int s, bool wantSurface) {
+      sampler->startPixelSample(pixel, s);
+      CameraSample cs = getCameraSample(*sampler, pixel, film.filter());
+      RayDifferential ray;
+      Float rayWeight = camera_.generateRayDifferential(cs, &ray);
+      ray.scaleDifferentials(differentialScale);
+      ++c.rays.cameraRays;
+      PixelSampleResult result;
+      Float alpha = 0;
+      // Before Li, which may shorten the camera ray's tMax.
+      if (rayWeight > 0 && (film.aovs() & kAovGeometric))
+        film.addAovSample(pixel, sampleAovs(scene, ray, arena, c.rays), cs.filterWeight);
+      if (rayWeight > 0 && wantSurface) {
+        // The shape-id rule compares surfaces within one pixel only: any stable id will do.
+        SurfaceInteraction first;
+        Ray probe = ray;
+        if (scene.intersect(probe, &first, c.rays))
+          result.surfaceId = uint64_t(reinterpret_cast<uintptr_t>(first.primitive));
+      }
+      if (rayWeight > 0) result.L = integrator_.Li(ray, scene, ctx, &alpha) * rayWeight;
+      if (!result.L.isFinite()) {
+        ++c.nonFinite;
+        result.L = Spectrum(0);
+      }
+      film.addSample(pixel, result.L, alpha, cs.filterWeight);
+      ++c.samples;
+      arena.reset();
+      return result;
+    };
+    std::vector<PixelSampleResult> initialResults;
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         Point2i pixel(x, y);
-        for (int s = s0; s < s1; ++s) {
-          sampler->startPixelSample(pixel, s);
-          CameraSample cs = getCameraSample(*sampler, pixel, film.filter());
-          RayDifferential ray;
-          Float rayWeight = camera_.generateRayDifferential(cs, &ray);
-          ray.scaleDifferentials(differentialScale);
-          ++c.rays.cameraRays;
-          Spectrum l(0);
-          Float alpha = 0;
-          // Before Li, which may shorten the camera ray's tMax.
-          if (rayWeight > 0 && (film.aovs() & kAovGeometric))
-            film.addAovSample(pixel, sampleAovs(scene, ray, arena, c.rays), cs.filterWeight);
-          if (rayWeight > 0) l = integrator_.Li(ray, scene, ctx, &alpha) * rayWeight;
-          if (!l.isFinite()) {
-            ++c.nonFinite;
-            l = Spectrum(0);
-          }
-          film.addSample(pixel, l, alpha, cs.filterWeight);
-          ++c.samples;
-          arena.reset();
+        if (adaptive) {
+          // The first samples decide whether the pixel gets the rest (pbrt-v2's adaptive
+          // sampler); both ranges are taken in index order, so the image stays a function of the
+          // pixel's own samples.
+          initialResults.clear();
+          for (int s = 0; s < initial; ++s) initialResults.push_back(takeSample(pixel, s, true));
+          if (sampler->needsMoreSamples(initialResults))
+            for (int s = initial; s < spp; ++s) takeSample(pixel, s, false);
+        } else {
+          for (int s = s0; s < s1; ++s) takeSample(pixel, s, false);
         }
       }
     progress.update(1);
