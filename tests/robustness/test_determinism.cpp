@@ -21,8 +21,9 @@ std::string cornellBox(int resolution) {
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) s.replace(at, from.size(), to);
   };
-  std::string bracketed = std::to_string(resolution);
-  bracketed.insert(0, "[").append("]");  // not "[" + ...: GCC 12 warns falsely (-Wrestrict)
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) on "[" + std::string and on insert.
+  std::string bracketed = "[";
+  bracketed.append(std::to_string(resolution)).append("]");
   replace("[256]", bracketed);
   replace("[256]", bracketed);
   return s;
