@@ -33,8 +33,9 @@ namespace candela {
 
 class TextureFactory {
  public:
-  // Reads the image at path converted to scene_linear from colorSpace ("": the default rule,
-  // sRGB for integer pixels and scene_linear for float pixels). Throws naming the path.
+  // Reads the image at path converted from colorSpace ("": the default rule, sRGB for integer
+  // pixels and scene_linear for float pixels) to the rendering space (scene_linear, or the
+  // --colorspace working space). Throws naming the path.
   using ImageLoader =
       std::function<ImageBuffer(const std::string& path, const std::string& colorSpace)>;
   using Warn = std::function<void(const FileLoc&, const std::string&)>;

@@ -91,6 +91,18 @@ TEST(TextureLoader, EightBitFilesAreSrgbEncoded) {
   expectAll(loadTextureImage(png, "sRGB - Texture", cm), expected, expected, expected, 2e-4f);
 }
 
+TEST(TextureLoader, SixteenBitAndGreyIntegerFilesAreSrgbEncoded) {
+  // Made with oiiotool: 2x2 RGB uint16 of 0.5 (code 32768) and 3x2 one-channel uint8 of 128.
+  ColorManagement cm;
+  const std::string dir = std::string(CANDELA_TEST_DATA_DIR) + "/textures/";
+  float v16 = float(srgbToLinear(32768.0 / 65535.0));
+  expectAll(loadTextureImage(dir + "grey16.png", "", cm), v16, v16, v16, 2e-4f);
+  float v8 = float(srgbToLinear(128.0 / 255.0));
+  ImageBuffer grey = loadTextureImage(dir + "grey8.png", "", cm);
+  EXPECT_EQ(grey.width, 3);
+  expectAll(grey, v8, v8, v8, 2e-4f);
+}
+
 TEST(TextureLoader, FloatFilesAreLinear) {
   TempDir dir;
   ColorManagement cm;
