@@ -12,8 +12,10 @@ ErrorLog::ErrorLog(const std::string& path) : path_(path) {
   std::error_code ec;
   bool fresh = !std::filesystem::exists(path, ec) || std::filesystem::file_size(path, ec) == 0;
   file_ = std::fopen(path.c_str(), "a");
-  if (!file_)
-    throw FileError(path, std::string("cannot open for appending: ") + std::strerror(errno));
+  if (!file_) {
+    std::string why = "cannot open for appending: ";
+    throw FileError(path, why.append(std::strerror(errno)));
+  }
   if (fresh) std::fprintf(file_, "%s\n", kHeader);
   std::fflush(file_);
 }

@@ -60,7 +60,8 @@ ProgressiveResult renderProgressively(const SamplerRenderer& renderer, RenderJob
     metadata->floats.push_back({"candela:targetError", float(cli.targetError)});
   metadata->floats.push_back({"candela:relmse", float(last.relmse)});
   metadata->strings.push_back(
-      {"candela:relmseSource", reference ? "reference " + cli.reference : "variance estimate"});
+      {"candela:relmseSource", reference ? std::string("reference ").append(cli.reference)
+                                         : std::string("variance estimate")});
   return pr;
 }
 
