@@ -14,7 +14,7 @@ const BSDF* PlasticMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena&
   if (!kd.isBlack()) bsdf->add(arena.make<LambertianReflection>(kd));
   Spectrum ks = clampSpectrum(ks_->evaluate(si));
   if (!ks.isBlack()) {
-    const Fresnel* fresnel = arena.make<FresnelDielectric>(Float(1.5), Float(1));
+    const Fresnel* fresnel = arena.make<FresnelDielectric>(Float(1), Float(1.5));
     const MicrofacetDistribution* d =
         arena.make<BlinnDistribution>(blinnExponent(roughness_->evaluate(si)));
     bsdf->add(arena.make<MicrofacetReflection>(ks, fresnel, d));

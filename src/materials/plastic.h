@@ -1,7 +1,8 @@
 // "plastic" (lrt draft §10.3; pbrt-v2 defaults Kd .25, Ks .25, roughness .1): a diffuse base
-// under a glossy Blinn coat, exponent 1 / roughness. The coat's Fresnel term is the seeds'
-// FresnelDielectric(1.5, 1) -- index 1.5 on the outside, 1 inside -- kept as printed so that
-// images match pbrt-v2 (pbrt-v3 swapped it); it reaches 1 past 41.8 degrees.
+// under a glossy Blinn coat, exponent 1 / roughness. The coat's Fresnel term is air (1) outside
+// and index 1.5 inside. The seeds print FresnelDielectric(1.5, 1), which puts the index outside
+// and makes the coat a total reflector past 41.8 degrees -- a known defect of the book code
+// (pbrt-v3 issue #210), not copied here.
 #pragma once
 
 #include "materials/material.h"

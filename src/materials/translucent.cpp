@@ -19,7 +19,7 @@ const BSDF* TranslucentMaterial::getBSDF(const SurfaceInteraction& si0, MemoryAr
   }
   Spectrum ks = clampSpectrum(ks_->evaluate(si));
   if (!ks.isBlack()) {
-    const Fresnel* fresnel = arena.make<FresnelDielectric>(index_, Float(1));
+    const Fresnel* fresnel = arena.make<FresnelDielectric>(Float(1), index_);
     const MicrofacetDistribution* d =
         arena.make<BlinnDistribution>(blinnExponent(roughness_->evaluate(si)));
     if (!r.isBlack()) bsdf->add(arena.make<MicrofacetReflection>(r * ks, fresnel, d));

@@ -1,7 +1,8 @@
 // "translucent" (lrt draft §10.4; pbrt-v2 defaults Kd .25, Ks .25, reflect .5, transmit .5,
 // roughness .1, index 1.5): plastic's diffuse and glossy lobes, each both reflected (times
-// reflect) and mirrored to the other side (times transmit). Black terms are skipped. As in
-// pbrt-v2 the coat's Fresnel term has the index outside, and the BSDF carries the index.
+// reflect) and mirrored to the other side (times transmit). Black terms are skipped. The coat's
+// Fresnel term is air outside, the index inside (the book code's reversed order is a defect; see
+// plastic.h), and the BSDF carries the index.
 #pragma once
 
 #include "materials/material.h"

@@ -21,11 +21,11 @@ const BSDF* UberMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& ar
     const MicrofacetDistribution* d =
         arena.make<BlinnDistribution>(blinnExponent(t_.roughness->evaluate(si)));
     bsdf->add(
-        arena.make<MicrofacetReflection>(ks, arena.make<FresnelDielectric>(eta, Float(1)), d));
+        arena.make<MicrofacetReflection>(ks, arena.make<FresnelDielectric>(Float(1), eta), d));
   }
   Spectrum kr = op * clampSpectrum(t_.kr->evaluate(si));
   if (!kr.isBlack())
-    bsdf->add(arena.make<SpecularReflection>(kr, arena.make<FresnelDielectric>(eta, Float(1))));
+    bsdf->add(arena.make<SpecularReflection>(kr, arena.make<FresnelDielectric>(Float(1), eta)));
   return bsdf;
 }
 

@@ -1,7 +1,8 @@
 // "uber" (pbrt-v2 defaults Kd .25, Ks .25, Kr 0, roughness .1, opacity 1, index 1.5): plastic's
 // diffuse and glossy lobes plus a Fresnel mirror, all times opacity, and a straight-through
-// transmission of 1 - opacity. As in pbrt-v2 (and plastic) the dielectric Fresnel terms put the
-// index outside, and the BSDF's eta stays 1: passing straight through bends nothing.
+// transmission of 1 - opacity. As in plastic, the dielectric Fresnel terms have air outside and
+// the index inside (not the book code's reversed order), and the BSDF's eta stays 1: passing
+// straight through bends nothing.
 #pragma once
 
 #include "materials/material.h"
