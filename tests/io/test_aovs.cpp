@@ -37,9 +37,9 @@ TEST(Aovs, SphereLayersRoundTripWithAnalyticValues) {
   ImageBuffer back = readImage(path);
   std::filesystem::remove_all(dir);
 
-  for (const char* ch : {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y",
-                         "N.Z", "Z", "P.X", "P.Y", "P.Z", "variance.R", "variance.G",
-                         "variance.B", "samples"})
+  for (const char* ch :
+       {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z", "P.X",
+        "P.Y", "P.Z", "variance.R", "variance.G", "variance.B", "samples"})
     ASSERT_GE(back.channelIndex(ch), 0) << ch;
   auto at = [&](int x, int y, const char* ch) { return back.at(x, y, back.channelIndex(ch)); };
 
