@@ -130,19 +130,26 @@ TEST(Watertight, RaysThroughVerticesHitTheTriangleTest) {
 // none at 1e5, where rounding of the direction moves the rays off the vertices;
 // tri_accel=bvh4.triangle4v lowers it to ~70). Random rays never hit vertices exactly, so
 // renders are unaffected in practice. Run with --gtest_also_run_disabled_tests.
-TEST(Watertight, DISABLED_EmbreeRaysThroughVerticesDoNotEscape) {
+// Debian's Embree 3.13.5 (robust mode) lets about 1.2% of rays aimed exactly at a shared vertex
+// through (measured 268-293 of 25,000 per placement); random rays are unaffected (above) and so is
+// our own triangle test (RaysThroughVerticesHitTheTriangleTest). Until that is fixed upstream or
+// worked around, this bounds the defect so that it cannot grow unnoticed.
+TEST(Watertight, EmbreeRaysThroughVerticesRarelyEscape) {
   for (const test::Placement& place : test::placements()) {
     SphereMesh sphere(place.t);
     const TriangleMesh& mesh = sphere.mesh();
     EmbreeAggregate agg(device(), sphere.scene.primitives);
     RNG rng(64);
+    const int n = 25000;
     int escaped = 0;
-    for (int i = 0; i < 25000; ++i) {
+    for (int i = 0; i < n; ++i) {
       Point3f o = insidePoint(place.t, rng);
       size_t v = size_t(rng.uniformFloat() * mesh.p.size()) % mesh.p.size();
       escaped += !agg.intersectP(Ray(o, mesh.p[v] - o));
     }
-    EXPECT_EQ(escaped, 0) << place.name;
+    std::printf("%s: %d of %d vertex-aimed rays escaped through Embree\n", place.name.c_str(),
+                escaped, n);
+    EXPECT_LT(escaped, n / 50) << place.name;  // 2%
   }
 }
 
