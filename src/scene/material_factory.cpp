@@ -192,19 +192,6 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
   throwUnknownPlugin(loc, "material", d.name, kMaterialNames);
 }
 
-std::unique_ptr<Material> createMaterial(const MaterialDesc& desc, TextureFactory& textures) {
-  // A one-material scene: enough for every material but mix, whose names it cannot resolve.
-  SceneDescription scene;
-  scene.materials.push_back(desc);
-  std::vector<std::unique_ptr<Material>> owned;
-  MaterialFactory factory(scene, textures, &owned);
-  if (desc.name == "mix") throw SceneError(desc.loc, "mix needs the scene's named materials");
-  if (desc.bumpMap && !desc.params.find("bumpmap"))
-    throw SceneError(desc.loc, "a BumpMap statement needs the scene's material factory");
-  factory.get(0);
-  return std::move(owned.front());
-}
-
 std::unique_ptr<Material> createDefaultMaterial(TextureFactory& textures) {
   return std::make_unique<MatteMaterial>(textures.spectrum({}, "Kd", Spectrum(0.5f), FileLoc()),
                                          textures.scalar({}, "sigma", 0, FileLoc()));

@@ -18,7 +18,6 @@ namespace candela {
                                      const std::string& name,
                                      const std::vector<std::string>& known);
 
-std::unique_ptr<Material> createMaterial(const MaterialDesc& desc, TextureFactory& textures);
 // The material of shapes that name none (pbrt: matte with Kd 0.5).
 std::unique_ptr<Material> createDefaultMaterial(TextureFactory& textures);
 
