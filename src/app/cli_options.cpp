@@ -29,6 +29,10 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   app.add_option("--accel", o->accelerator,
                  "Aggregate, overriding the scene's Accelerator (default: embree)")
       ->check(CLI::IsMember(acceleratorNames()));
+  app.add_option("--subdiv", o->subdiv,
+                 "Code that refines loopsubdiv shapes: book (ours, default) or opensubdiv; the "
+                 "surface is the same")
+      ->check(CLI::IsMember({"book", "opensubdiv"}));
   app.add_flag("-q,--quiet", o->quiet, "No progress or statistics output");
   app.add_flag("-v,--verbose", o->verbose, "More detail");
   app.add_flag("--stats", o->stats, "Print what the scene built (geometry, Embree, lights...)");

@@ -20,7 +20,8 @@ struct CliOptions {
   uint64_t seed = 0;
   std::optional<Bounds2f> cropWindow;
   bool quick = false, quiet = false, verbose = false, stats = false;
-  std::string accelerator;  // overrides the scene's Accelerator; "" = the scene's (embree)
+  std::string accelerator;      // overrides the scene's Accelerator; "" = the scene's (embree)
+  std::string subdiv = "book";  // the code that refines "loopsubdiv": book or opensubdiv
   bool half = false;
   std::string compression;  // "" = the Film's "compression" (default zip)
   std::string aovs;         // "albedo,normal,..." added to the Film's "aovs"

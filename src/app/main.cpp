@@ -73,6 +73,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.cropWindow = cli.cropWindow;
   build.quick = cli.quick;
   build.accelerator = cli.accelerator;
+  build.subdiv = cli.subdiv == "opensubdiv" ? LoopProducer::OpenSubdiv : LoopProducer::Book;
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
   build.colorMatrix = writer.workingSpaceMatrix();
   build.loadImage = [&writer](const std::string& path, const std::string& colorSpace) {

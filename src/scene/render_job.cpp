@@ -80,8 +80,9 @@ class MaterialCache {
 // noAreaLight is set, an area light in effect is ignored with that warning.
 void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* noAreaLight,
               MaterialCache& materials, RenderJob& job, std::vector<Primitive>* out,
-              const WarningSink& warn) {
-  CreatedShapes created = createShapes(sd, objectToWorld, *job.textures);
+              const BuildOptions& options) {
+  const WarningSink& warn = options.warn;
+  CreatedShapes created = createShapes(sd, objectToWorld, *job.textures, options.subdiv);
   reportUnused(sd, warn);
   const Material* material = materials.get(sd.material);
   bool allowAreaLight = noAreaLight == nullptr;
@@ -115,18 +116,19 @@ AnimatedTransform animated(const AnimatedTransformDesc& d) {
 // animated shape is created in its object space as a prototype of its own with one instance
 // under its animated transform (pbrt-v3 wraps it in a TransformedPrimitive the same way).
 void addGeometry(const SceneDescription& desc, MaterialCache& materials, RenderJob& job,
-                 const WarningSink& warn) {
+                 const BuildOptions& options) {
+  const WarningSink& warn = options.warn;
   SceneGeometry& geometry = job.geometry;
   for (const ShapeDesc& sd : desc.shapes) {
     if (!sd.objectToWorld.isAnimated()) {
-      addShape(sd, sd.objectToWorld.start, nullptr, materials, job, &geometry.primitives, warn);
+      addShape(sd, sd.objectToWorld.start, nullptr, materials, job, &geometry.primitives, options);
       continue;
     }
     auto proto = std::make_unique<InstancePrototype>();
     proto->name = sd.name;
     addShape(sd, Transform(),
              "area lights on shapes with animated transforms are ignored (as in pbrt)", materials,
-             job, &proto->primitives, warn);
+             job, &proto->primitives, options);
     geometry.instances.push_back(Instance{proto.get(), animated(sd.objectToWorld)});
     geometry.prototypes.push_back(std::move(proto));
   }
@@ -148,7 +150,7 @@ void addGeometry(const SceneDescription& desc, MaterialCache& materials, RenderJ
                "using the start transform");
         addShape(sd, sd.objectToWorld.start,
                  "area lights inside object instances are ignored (as in pbrt)", materials, job,
-                 &proto->primitives, warn);
+                 &proto->primitives, options);
       }
       it->second = proto.get();
       geometry.prototypes.push_back(std::move(proto));
@@ -221,7 +223,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
 
   // Geometry, materials and lights: only what the shapes use.
   MaterialCache materials(desc, job, warn);
-  addGeometry(desc, materials, job, warn);
+  addGeometry(desc, materials, job, options);
   for (const LightDesc& ld : desc.lights) {
     job.lights.push_back(createLight(ld, options.loadImage));
     reportUnused(ld, warn);

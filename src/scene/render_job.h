@@ -22,6 +22,7 @@
 #include "scene/scene.h"
 #include "scene/scene_description.h"
 #include "scene/texture_factory.h"
+#include "shapes/loop_subdiv_shape.h"
 #include "shapes/shape.h"
 
 namespace candela {
@@ -38,7 +39,8 @@ struct BuildOptions {
   std::optional<Bounds2f> cropWindow;  // NDC, overrides the film's
   bool quick = false;                  // quarter resolution, an eighth of the samples
   std::string accelerator;             // overrides the Accelerator statement ("" = the scene's)
-  unsigned aovs = 0;                   // AovFlag bits, added to the Film's "aovs"
+  LoopProducer subdiv = LoopProducer::Book;  // the code that refines "loopsubdiv" shapes
+  unsigned aovs = 0;                         // AovFlag bits, added to the Film's "aovs"
   // scene_linear RGB -> working-space RGB for every colour parameter (--colorspace); none =
   // identity.
   std::optional<std::array<Float, 9>> colorMatrix;

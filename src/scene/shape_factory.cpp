@@ -37,14 +37,15 @@ void readAlpha(const ShapeDesc& desc, TextureFactory& textures, TriangleMesh* me
 }  // namespace
 
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           TextureFactory& textures) {
-  CreatedShapes out = createShapes(desc, objectToWorld);
+                           TextureFactory& textures, LoopProducer subdiv) {
+  CreatedShapes out = createShapes(desc, objectToWorld, subdiv);
   if (out.mesh && (desc.name == "trianglemesh" || desc.name == "plymesh"))
     readAlpha(desc, textures, out.mesh.get());
   return out;
 }
 
-CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld) {
+CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
+                           LoopProducer subdiv) {
   CreatedShapes out;
   using QuadricFactory = std::unique_ptr<Shape> (*)(const Transform&, bool, const ParamSet&);
   QuadricFactory quadric = nullptr;
@@ -64,7 +65,7 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
                                           &out.mesh, desc.loc);
   } else if (desc.name == "loopsubdiv") {
     out.shapes = createLoopSubdivShapes(objectToWorld, desc.reverseOrientation, desc.params,
-                                        &out.mesh, desc.loc);
+                                        &out.mesh, desc.loc, subdiv);
   } else if (desc.name == "plymesh") {
     std::string dir = std::filesystem::path(desc.loc.file).parent_path().string();
     out.shapes = createPlyMeshShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh,

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "scene/scene_description.h"
+#include "shapes/loop_subdiv_shape.h"
 #include "shapes/shape.h"
 
 namespace candela {
@@ -13,7 +14,7 @@ struct TriangleMesh;
 
 struct CreatedShapes {
   std::vector<std::unique_ptr<Shape>> shapes;
-  std::unique_ptr<TriangleMesh> mesh;  // set for trianglemesh and plymesh
+  std::unique_ptr<TriangleMesh> mesh;  // set for the meshes: all but the quadrics
   CreatedShapes();
   ~CreatedShapes();
   CreatedShapes(CreatedShapes&&) noexcept;
@@ -22,10 +23,11 @@ struct CreatedShapes {
 class TextureFactory;
 
 // Triangle meshes' "alpha" and "shadowalpha" (pbrt-v2 cut-outs, float textures or constants) come
-// from textures.
+// from textures. subdiv picks the code that refines "loopsubdiv" (the same surface either way).
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           TextureFactory& textures);
+                           TextureFactory& textures, LoopProducer subdiv = LoopProducer::Book);
 // Without textures: "alpha" and "shadowalpha" are not read (and so reported unused).
-CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld);
+CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
+                           LoopProducer subdiv = LoopProducer::Book);
 
 }  // namespace candela

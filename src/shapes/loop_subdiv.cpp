@@ -7,13 +7,16 @@ namespace candela {
 
 namespace {
 
-// Weighted sums in double: four levels of masks and the limit stay well inside float's precision.
+// A weighted sum of points: a point when the weights sum to 1, a vector (a tangent) when to 0.
 struct Sum {
   double x = 0, y = 0, z = 0;
-  void add(const Point3f& p, double w) { x += w * p.x, y += w * p.y, z += w * p.z; }
-  Point3f point() const { return Point3f(Float(x), Float(y), Float(z)); }
-  Vector3f vector() const { return Vector3f(Float(x), Float(y), Float(z)); }
+  void add(const LoopPoint& p, double w) { x += w * p.x, y += w * p.y, z += w * p.z; }
+  LoopPoint point() const { return LoopPoint(x, y, z); }
 };
+
+Sum cross(const Sum& a, const Sum& b) {
+  return Sum{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 
 }  // namespace
 
@@ -93,7 +96,7 @@ namespace {
 // The transverse limit tangent at a boundary vertex whose ring has n vertices (valence n in the
 // draft: faces + 1), ring[0] and ring[n − 1] on the boundary; it points into the surface (draft
 // §3.7, after Hoppe et al. 1994).
-Vector3f boundaryTransverse(const LoopMesh& mesh, int v, const std::vector<int>& ring) {
+Sum boundaryTransverse(const LoopMesh& mesh, int v, const std::vector<int>& ring) {
   int n = int(ring.size());
   auto P = [&](int k) { return mesh.p[ring[k]]; };
   Sum s;
@@ -109,7 +112,7 @@ Vector3f boundaryTransverse(const LoopMesh& mesh, int v, const std::vector<int>&
     s.add(P(n - 1), -std::sin(theta));
     for (int k = 1; k <= n - 2; ++k) s.add(P(k), -(2 * std::cos(theta) - 2) * std::sin(k * theta));
   }
-  return s.vector();
+  return s;
 }
 
 }  // namespace
@@ -127,7 +130,7 @@ LoopLimit loopLimit(const LoopMesh& mesh, const LoopTopology& t, const LoopRules
       continue;
     }
     Sum p;
-    Vector3f normal;
+    Sum normal;
     if (t.boundary[v]) {
       double side = rules.boundaryLimit == LoopRules::Book ? 0.2 : 1.0 / 6.0;
       p.add(mesh.p[v], 1 - 2 * side);
@@ -135,7 +138,9 @@ LoopLimit loopLimit(const LoopMesh& mesh, const LoopTopology& t, const LoopRules
       p.add(mesh.p[ring.back()], side);
       // Along the boundary, last − first, points clockwise seen from the winding's side, so the
       // normal is transverse × along.
-      Vector3f along = mesh.p[ring.back()] - mesh.p[ring.front()];
+      Sum along;
+      along.add(mesh.p[ring.back()], 1);
+      along.add(mesh.p[ring.front()], -1);
       normal = cross(boundaryTransverse(mesh, v, ring), along);
     } else {
       double g = loopLimitGamma(n, rules.beta);
@@ -148,11 +153,12 @@ LoopLimit loopLimit(const LoopMesh& mesh, const LoopTopology& t, const LoopRules
         s.add(mesh.p[ring[k]], std::cos(a));
         tt.add(mesh.p[ring[k]], std::sin(a));
       }
-      normal = cross(s.vector(), tt.vector());
+      normal = cross(s, tt);
     }
     out.p[v] = p.point();
-    Float len = normal.length();
-    if (len > 0) out.n[v] = Normal3f(normal / len);
+    double len = std::sqrt(normal.x * normal.x + normal.y * normal.y + normal.z * normal.z);
+    if (len > 0)
+      out.n[v] = Normal3f(Float(normal.x / len), Float(normal.y / len), Float(normal.z / len));
   }
   return out;
 }

@@ -48,7 +48,7 @@ LoopMesh refineLoop(const LoopMesh& control, int levels, const LoopRules& rules,
 // way the faces wind (counter-clockwise seen from the normal's side). A vertex no face uses keeps
 // its position and gets a zero normal.
 struct LoopLimit {
-  std::vector<Point3f> p;
+  std::vector<LoopPoint> p;
   std::vector<Normal3f> n;
 };
 LoopLimit loopLimit(const LoopMesh& mesh, const LoopTopology& topology, const LoopRules& rules);

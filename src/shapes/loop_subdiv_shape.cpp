@@ -10,13 +10,6 @@ namespace {
 
 constexpr const char* kName = "loopsubdiv";
 
-template <typename T>
-std::vector<T> permuted(const std::vector<T>& ours, const std::vector<int>& fromOurs) {
-  std::vector<T> out(ours.size());
-  for (size_t i = 0; i < ours.size(); ++i) out[fromOurs[i]] = ours[i];
-  return out;
-}
-
 }  // namespace
 
 std::vector<std::unique_ptr<Shape>> createLoopSubdivShapes(
@@ -29,7 +22,9 @@ std::vector<std::unique_ptr<Shape>> createLoopSubdivShapes(
   int levels = params.getOneInt("nlevels", 3);
   if (levels < 0 || levels > 8)
     err("nlevels", "\"nlevels\" must be in [0, 8], found " + std::to_string(levels));
-  LoopMesh control{params.getPoint3fArray("P"), params.getIntArray("indices")};
+  LoopMesh control;
+  for (const Point3f& v : params.getPoint3fArray("P")) control.p.push_back(v);
+  control.indices = params.getIntArray("indices");
   if (control.p.empty()) err("P", "missing \"point3 P\"");
   if (control.indices.empty()) err("indices", "missing \"integer indices\"");
   const char* uvName = params.find("uv") ? "uv" : "st";
@@ -48,29 +43,49 @@ std::vector<std::unique_ptr<Shape>> createLoopSubdivShapes(
   checkCount(uvName, uv.size());
   checkCount("N", n.size());
 
-  // The linear values follow our refinement (validating the topology first).
+  // Validation first, for both producers.
   LoopTopology t = buildLoopTopology(control, params.locationOf("indices", loc), kName);
-  LoopMesh mesh = control;
-  const LoopRules book{LoopRules::Warren, LoopRules::Book};
-  for (int level = 0; level < levels; ++level) {
-    if (!uv.empty()) uv = refineLinearOnce(uv, t);
-    if (!n.empty()) n = refineLinearOnce(n, t);
-    mesh = refineLoopOnce(mesh, t, book);
-    t = buildLoopTopology(mesh, loc, kName);
-  }
-  std::vector<Point3f> p;
+  std::vector<int> indices;
+  std::vector<LoopPoint> p;
   std::vector<Normal3f> limitN;
   if (producer == LoopProducer::Book) {
-    LoopLimit limit = loopLimit(mesh, t, book);
+    LoopMesh mesh = control;
+    for (int level = 0; level < levels; ++level) {
+      if (!uv.empty()) uv = refineLinearOnce(uv, t);
+      if (!n.empty()) n = refineLinearOnce(n, t);
+      mesh = refineLoopOnce(mesh, t, kLoopSubdivShapeRules);
+      t = buildLoopTopology(mesh, loc, kName);
+    }
+    LoopLimit limit = loopLimit(mesh, t, kLoopSubdivShapeRules);
+    indices = std::move(mesh.indices);
     p = std::move(limit.p);
     limitN = std::move(limit.n);
   } else {
-    OsdLoopResult osd = refineLoopOpenSubdiv(control, levels, OsdBoundary::EdgeOnly, loc, kName);
-    mesh.indices = std::move(osd.refined.indices);
+    // uv and N, when given, ride along as OpenSubdiv's varying (linear) data.
+    std::vector<std::vector<LoopPoint>> linear;
+    if (!uv.empty()) {
+      std::vector<LoopPoint>& values = linear.emplace_back();
+      for (const Point2f& v : uv) values.emplace_back(v.x, v.y, 0);
+    }
+    if (!n.empty()) {
+      std::vector<LoopPoint>& values = linear.emplace_back();
+      for (const Normal3f& v : n) values.emplace_back(v.x, v.y, v.z);
+    }
+    OsdLoopResult osd = refineLoopOpenSubdiv(control, levels, OsdBoundary::EdgeOnly,
+                                             params.locationOf("indices", loc), kName, linear);
+    indices = std::move(osd.refined.indices);
     p = std::move(osd.limitP);
     limitN = std::move(osd.limitN);
-    if (!uv.empty()) uv = permuted(uv, osd.fromOurs);
-    if (!n.empty()) n = permuted(n, osd.fromOurs);
+    size_t channel = 0;
+    if (!uv.empty()) {
+      uv.clear();
+      for (const LoopPoint& v : osd.linear[channel++]) uv.emplace_back(Float(v.x), Float(v.y));
+    }
+    if (!n.empty()) {
+      n.clear();
+      for (const LoopPoint& v : osd.linear[channel++])
+        n.emplace_back(Float(v.x), Float(v.y), Float(v.z));
+    }
   }
   if (n.empty()) {
     n = std::move(limitN);
@@ -78,8 +93,11 @@ std::vector<std::unique_ptr<Shape>> createLoopSubdivShapes(
     for (Normal3f& v : n)
       if (v.length() > 0) v = normalize(v);
   }
+  std::vector<Point3f> positions;
+  positions.reserve(p.size());
+  for (const LoopPoint& v : p) positions.push_back(v.toPoint3f());
   auto triangles = std::make_unique<TriangleMesh>(
-      objectToWorld, reverseOrientation, std::move(mesh.indices), std::move(p), std::move(n),
+      objectToWorld, reverseOrientation, std::move(indices), std::move(positions), std::move(n),
       std::vector<Vector3f>(), std::move(uv));
   std::vector<std::unique_ptr<Shape>> shapes = createTriangleShapes(triangles.get());
   *meshOut = std::move(triangles);

@@ -5,13 +5,21 @@
 #include <memory>
 #include <vector>
 
+#include "shapes/loop_subdiv.h"
 #include "shapes/triangle_mesh.h"
 
 namespace candela {
 
-// Which code refines: ours with the draft's rules (LoopRules{Warren, Book}), or OpenSubdiv 3.5
-// (VTX_BOUNDARY_EDGE_ONLY, i.e. ours with LoopRules{Loop, BSpline}).
+// Which code refines (the command line's --subdiv): ours, the draft's algorithm (loop_subdiv.h), or
+// OpenSubdiv 3.5 (Sdc::SCHEME_LOOP, VTX_BOUNDARY_EDGE_ONLY). Both apply the same rules, so both
+// give the same surface and the same image.
 enum class LoopProducer { Book, OpenSubdiv };
+
+// The rules the shape uses with either producer: Loop's β and the B-spline boundary limit, which
+// are what OpenSubdiv implements. The draft's 1/5, 3/5, 1/5 boundary limit puts the point off the
+// boundary curve (a defect); its β (Warren's 3/(8n)) is a legitimate variant, kept in LoopRules and
+// tested, but OpenSubdiv has no option for it, and both producers must agree.
+inline constexpr LoopRules kLoopSubdivShapeRules{LoopRules::Loop, LoopRules::BSpline};
 
 // "nlevels" (integer, default 3, 0 to 8), "indices" (3 per triangle), "P" (point3); optional "uv"
 // (or "st") and "N", one per control vertex. uv and N are carried through linearly (each refined

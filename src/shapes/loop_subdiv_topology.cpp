@@ -1,10 +1,16 @@
 #include "shapes/loop_subdiv_topology.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 
 namespace candela {
+
+double distance(const LoopPoint& a, const LoopPoint& b) {
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) +
+                   (a.z - b.z) * (a.z - b.z));
+}
 
 int LoopTopology::opposite(const LoopMesh& mesh, int f, int e) const {
   for (int i = 0; i < 3; ++i) {

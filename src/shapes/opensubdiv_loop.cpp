@@ -3,6 +3,7 @@
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
+#include <cmath>
 #include <memory>
 
 namespace candela {
@@ -12,13 +13,25 @@ namespace {
 using namespace OpenSubdiv;
 
 // The primvar type PrimvarRefiner interpolates: it needs Clear and AddWithWeight (dependencies.md
-// §6).
+// §6). In double, with PrimvarRefinerReal<double>'s double weights: see LoopPoint for why.
 struct OsdPoint {
-  float x = 0, y = 0, z = 0;
+  double x = 0, y = 0, z = 0;
   void Clear(void* = nullptr) { x = y = z = 0; }
-  void AddWithWeight(const OsdPoint& s, float w) { x += w * s.x, y += w * s.y, z += w * s.z; }
-  Vector3f vector() const { return Vector3f(x, y, z); }
+  void AddWithWeight(const OsdPoint& s, double w) { x += w * s.x, y += w * s.y, z += w * s.z; }
 };
+using OsdPrimvarRefiner = Far::PrimvarRefinerReal<double>;
+
+std::vector<OsdPoint> toOsd(const std::vector<LoopPoint>& points) {
+  std::vector<OsdPoint> out(points.size());
+  for (size_t i = 0; i < points.size(); ++i) out[i] = {points[i].x, points[i].y, points[i].z};
+  return out;
+}
+
+OsdPoint cross(const OsdPoint& a, const OsdPoint& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+OsdPoint minus(const OsdPoint& a, const OsdPoint& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+double dot(const OsdPoint& a, const OsdPoint& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 std::unique_ptr<Far::TopologyRefiner> createRefiner(const LoopMesh& control, OsdBoundary boundary) {
   Sdc::Options sdc;
@@ -60,7 +73,8 @@ std::vector<int> mapOurVertices(const LoopMesh& control, int levels,
 }  // namespace
 
 OsdLoopResult refineLoopOpenSubdiv(const LoopMesh& control, int levels, OsdBoundary boundary,
-                                   const FileLoc& loc, const std::string& shapeName) {
+                                   const FileLoc& loc, const std::string& shapeName,
+                                   const std::vector<std::vector<LoopPoint>>& linear) {
   buildLoopTopology(control, loc, shapeName);
   std::unique_ptr<Far::TopologyRefiner> refiner = createRefiner(control, boundary);
   if (!refiner) throw SceneError(loc, shapeName + ": OpenSubdiv rejected the mesh");
@@ -70,13 +84,19 @@ OsdLoopResult refineLoopOpenSubdiv(const LoopMesh& control, int levels, OsdBound
   options.fullTopologyInLastLevel = true;
   if (levels > 0) refiner->RefineUniform(options);
 
-  std::vector<OsdPoint> p(control.p.size());
-  for (size_t i = 0; i < p.size(); ++i) p[i] = {control.p[i].x, control.p[i].y, control.p[i].z};
-  Far::PrimvarRefiner primvars(*refiner);
+  OsdPrimvarRefiner primvars(*refiner);
+  std::vector<OsdPoint> p = toOsd(control.p);
+  std::vector<std::vector<OsdPoint>> varying;
+  for (const std::vector<LoopPoint>& values : linear) varying.push_back(toOsd(values));
   for (int l = 1; l <= levels; ++l) {
     std::vector<OsdPoint> next(refiner->GetLevel(l).GetNumVertices());
     primvars.Interpolate(l, p, next);
     p.swap(next);
+    for (std::vector<OsdPoint>& values : varying) {
+      std::vector<OsdPoint> refined(p.size());
+      primvars.InterpolateVarying(l, values, refined);
+      values.swap(refined);
+    }
   }
   std::vector<OsdPoint> limit(p.size()), tan1(p.size()), tan2(p.size());
   primvars.Limit(p, limit, tan1, tan2);
@@ -87,22 +107,33 @@ OsdLoopResult refineLoopOpenSubdiv(const LoopMesh& control, int levels, OsdBound
     for (int v : last.GetFaceVertices(f)) out.refined.indices.push_back(v);
   // OpenSubdiv's tangents need not be ordered with the winding: the sum of the incident faces'
   // normals decides the side.
-  std::vector<Vector3f> faceSide(p.size());
+  std::vector<OsdPoint> faceSide(p.size());
   for (int f = 0; f < last.GetNumFaces(); ++f) {
     const int* v = &out.refined.indices[3 * f];
-    Vector3f n = cross(p[v[1]].vector() - p[v[0]].vector(), p[v[2]].vector() - p[v[0]].vector());
-    for (int i = 0; i < 3; ++i) faceSide[v[i]] += n;
+    OsdPoint n = cross(minus(p[v[1]], p[v[0]]), minus(p[v[2]], p[v[0]]));
+    for (int i = 0; i < 3; ++i) faceSide[v[i]].AddWithWeight(n, 1);
   }
   for (size_t i = 0; i < p.size(); ++i) {
     out.refined.p.emplace_back(p[i].x, p[i].y, p[i].z);
     out.limitP.emplace_back(limit[i].x, limit[i].y, limit[i].z);
-    Vector3f n = cross(tan1[i].vector(), tan2[i].vector());
-    if (dot(n, faceSide[i]) < 0) n = -n;
-    Float len = n.length();
-    out.limitN.push_back(len > 0 ? Normal3f(n / len) : Normal3f());
+    OsdPoint n = cross(tan1[i], tan2[i]);
+    double len = std::sqrt(dot(n, n)) * (dot(n, faceSide[i]) < 0 ? -1 : 1);
+    out.limitN.push_back(len != 0 ? Normal3f(Float(n.x / len), Float(n.y / len), Float(n.z / len))
+                                  : Normal3f());
   }
-  out.fromOurs = mapOurVertices(control, levels, *refiner, loc, shapeName);
+  for (const std::vector<OsdPoint>& values : varying) {
+    std::vector<LoopPoint>& to = out.linear.emplace_back();
+    for (const OsdPoint& v : values) to.emplace_back(v.x, v.y, v.z);
+  }
   return out;
+}
+
+std::vector<int> openSubdivIndexOfOurs(const LoopMesh& control, int levels) {
+  buildLoopTopology(control, {}, "loopsubdiv");
+  std::unique_ptr<Far::TopologyRefiner> refiner = createRefiner(control, OsdBoundary::EdgeOnly);
+  Far::TopologyRefiner::UniformOptions options(levels);
+  if (levels > 0) refiner->RefineUniform(options);
+  return mapOurVertices(control, levels, *refiner, {}, "loopsubdiv");
 }
 
 }  // namespace candela

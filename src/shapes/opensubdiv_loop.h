@@ -17,18 +17,25 @@ namespace candela {
 enum class OsdBoundary { EdgeOnly, EdgeAndCorner };
 
 struct OsdLoopResult {
-  LoopMesh refined;              // the last level, in OpenSubdiv's vertex numbering and faces
-  std::vector<Point3f> limitP;   // the limit of each refined vertex
-  std::vector<Normal3f> limitN;  // unit, turned to the side the incident faces wind towards
-  // For each vertex of refineLoop's result at the same level (even vertices first, then one per
-  // edge in buildLoopTopology's order), its index in refined.
-  std::vector<int> fromOurs;
+  LoopMesh refined;               // the last level, in OpenSubdiv's vertex numbering and faces
+  std::vector<LoopPoint> limitP;  // the limit of each refined vertex
+  std::vector<Normal3f> limitN;   // unit, turned to the side the incident faces wind towards
+  // The values passed as `linear`, refined linearly (OpenSubdiv's "varying" interpolation: what
+  // refineLinearOnce does), one per refined vertex.
+  std::vector<std::vector<LoopPoint>> linear;
 };
 
 // Validates control as refineLoop does (SceneError naming shapeName and the face) before handing
-// it to OpenSubdiv, which must never see bad topology.
+// it to OpenSubdiv, which must never see bad topology. Runs in double, like our code. Each entry
+// of linear (up to three components per control vertex: uv, user normals) is carried along.
 OsdLoopResult refineLoopOpenSubdiv(const LoopMesh& control, int levels, OsdBoundary boundary,
                                    const FileLoc& loc = {},
-                                   const std::string& shapeName = "loopsubdiv");
+                                   const std::string& shapeName = "loopsubdiv",
+                                   const std::vector<std::vector<LoopPoint>>& linear = {});
+
+// For each vertex of refineLoop(control, levels)'s result (even vertices first, then one per edge
+// in buildLoopTopology's order, level by level), the index of the same vertex in
+// refineLoopOpenSubdiv's: how the cross-checks pair them up.
+std::vector<int> openSubdivIndexOfOurs(const LoopMesh& control, int levels);
 
 }  // namespace candela

@@ -50,7 +50,7 @@ TEST(LoopSubdiv, MasksSumToOne) {
         LoopRules rules{b, bl};
         LoopMesh moved = m;
         Vector3f d(10, -20, 30);
-        for (Point3f& p : moved.p) p += d;
+        for (LoopPoint& p : moved.p) p = LoopPoint(p.x + d.x, p.y + d.y, p.z + d.z);
         LoopMesh r0 = refineLoop(m, 2, rules), r1 = refineLoop(moved, 2, rules);
         LoopLimit l0 = loopLimit(r0, buildLoopTopology(r0, {}, "t"), rules);
         LoopLimit l1 = loopLimit(r1, buildLoopTopology(r1, {}, "t"), rules);
@@ -91,7 +91,7 @@ TEST(LoopSubdiv, LimitInsideControlHull) {
     LoopRules rules{b, LoopRules::Book};
     LoopMesh r = refineLoop(m, 3, rules);
     LoopLimit l = loopLimit(r, buildLoopTopology(r, {}, "t"), rules);
-    for (const Point3f& p : l.p)
+    for (const LoopPoint& p : l.p)
       for (int f = 0; f < 4; ++f)
         EXPECT_LE(dot(faceNormal(m, f), p - m.p[m.indices[3 * f]]), 1e-5f);
   }
@@ -125,7 +125,7 @@ TEST(LoopSubdiv, ClosedTetrahedronStaysClosedAndOriented) {
 TEST(LoopSubdiv, OpenMeshNormalsFollowTheWinding) {
   // A bumped grid (boundary vertices of ring sizes 2, 3, 4): normals on the winding's side (+z).
   LoopMesh m = tiltedGrid();
-  for (Point3f& p : m.p) p.z = (p.x == 1 && p.y == 1) ? 0.5f : 0.f;
+  for (LoopPoint& p : m.p) p.z = (p.x == 1 && p.y == 1) ? 0.5 : 0.0;
   LoopRules rules;
   LoopMesh r = refineLoop(m, 2, rules);
   LoopLimit l = loopLimit(r, buildLoopTopology(r, {}, "t"), rules);
@@ -135,7 +135,7 @@ TEST(LoopSubdiv, OpenMeshNormalsFollowTheWinding) {
 TEST(LoopSubdiv, BoundaryLimitRules) {
   // The book's boundary limit differs from the B-spline's by (1/30)(first + last − 2v).
   LoopMesh m = tiltedGrid();
-  for (Point3f& p : m.p) p.z = Float((int(p.x) * 7 + int(p.y) * 3) % 5);
+  for (LoopPoint& p : m.p) p.z = (int(p.x) * 7 + int(p.y) * 3) % 5;
   LoopTopology t = buildLoopTopology(m, {}, "t");
   LoopLimit book = loopLimit(m, t, {LoopRules::Warren, LoopRules::Book});
   LoopLimit spline = loopLimit(m, t, {LoopRules::Warren, LoopRules::BSpline});

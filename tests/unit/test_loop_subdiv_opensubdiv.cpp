@@ -107,9 +107,11 @@ std::vector<Case> cases() {
 }
 
 Float diagonal(const LoopMesh& m) {
-  Point3f lo = m.p[0], hi = m.p[0];
-  for (const Point3f& p : m.p)
+  Point3f lo = m.p[0].toPoint3f(), hi = lo;
+  for (const LoopPoint& q : m.p) {
+    Point3f p = q.toPoint3f();
     for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
+  }
   return distance(lo, hi);
 }
 
@@ -118,9 +120,13 @@ Float angle(const Normal3f& a, const Normal3f& b) {
 }
 
 TEST(LoopSubdivOpenSubdiv, MatchesWithOpenSubdivRules) {
+  // Issue 4 asks for 1e-5 of the diagonal and 1e-3 rad. Both run in double, so the same rules
+  // agree to rounding: 1e-12 of the diagonal, and 1e-6 rad (the normals are stored in float). That
+  // the boundary vertices with 1 to 8 faces agree that closely rules out any difference in the
+  // boundary tangent rules.
   const LoopRules rules{LoopRules::Loop, LoopRules::BSpline};
   for (const Case& c : cases()) {
-    Float tolerance = 1e-5f * diagonal(c.mesh);
+    double tolerance = 1e-5 * diagonal(c.mesh);
     for (int levels = 1; levels <= 4; ++levels) {
       SCOPED_TRACE(c.name + ", level " + std::to_string(levels));
       LoopMesh ours = refineLoop(c.mesh, levels, rules);
@@ -128,16 +134,20 @@ TEST(LoopSubdivOpenSubdiv, MatchesWithOpenSubdivRules) {
       OsdLoopResult osd = refineLoopOpenSubdiv(c.mesh, levels, OsdBoundary::EdgeOnly);
       ASSERT_EQ(ours.p.size(), osd.refined.p.size());
       ASSERT_EQ(ours.faceCount(), osd.refined.faceCount());
-      Float worstP = 0, worstLimit = 0, worstAngle = 0;
+      std::vector<int> fromOurs = openSubdivIndexOfOurs(c.mesh, levels);
+      double worstP = 0, worstLimit = 0, worstAngle = 0;
       for (size_t v = 0; v < ours.p.size(); ++v) {
-        int o = osd.fromOurs[v];
+        int o = fromOurs[v];
         worstP = std::max(worstP, distance(ours.p[v], osd.refined.p[o]));
         worstLimit = std::max(worstLimit, distance(limit.p[v], osd.limitP[o]));
-        worstAngle = std::max(worstAngle, angle(limit.n[v], osd.limitN[o]));
+        worstAngle = std::max(worstAngle, double(angle(limit.n[v], osd.limitN[o])));
       }
       EXPECT_LE(worstP, tolerance);
       EXPECT_LE(worstLimit, tolerance);
-      EXPECT_LT(worstAngle, 1e-3f);
+      EXPECT_LT(worstAngle, 1e-3);
+      EXPECT_LE(worstP, 1e-7 * tolerance);
+      EXPECT_LE(worstLimit, 1e-7 * tolerance);
+      EXPECT_LT(worstAngle, 1e-6);
     }
   }
 }
@@ -151,6 +161,7 @@ TEST(LoopSubdivOpenSubdiv, DraftBetaDiffersByItsWeights) {
     LoopTopology t = buildLoopTopology(c.mesh, {}, "t");
     LoopMesh book = refineLoop(c.mesh, 1, {LoopRules::Warren, LoopRules::BSpline});
     OsdLoopResult osd = refineLoopOpenSubdiv(c.mesh, 1, OsdBoundary::EdgeOnly);
+    std::vector<int> fromOurs = openSubdivIndexOfOurs(c.mesh, 1);
     bool anyDiffers = false;
     for (size_t v = 0; v < book.p.size(); ++v) {
       Vector3f expected;
@@ -160,7 +171,7 @@ TEST(LoopSubdivOpenSubdiv, DraftBetaDiffersByItsWeights) {
         expected *= Float(loopBeta(n, LoopRules::Warren) - loopBeta(n, LoopRules::Loop));
       }
       anyDiffers |= expected.length() > 100 * tolerance;
-      EXPECT_LE(((book.p[v] - osd.refined.p[osd.fromOurs[v]]) - expected).length(), tolerance) << v;
+      EXPECT_LE(((book.p[v] - osd.refined.p[fromOurs[v]]) - expected).length(), tolerance) << v;
     }
     // Valences 3 and 6 have the same β under both (all the tetrahedron and grid have inside).
     EXPECT_EQ(anyDiffers, c.name == "icosahedron" || c.name == "valences 3-12");
@@ -175,13 +186,14 @@ TEST(LoopSubdivOpenSubdiv, DraftBoundaryLimitDiffersByOneThirtieth) {
     LoopTopology t = buildLoopTopology(ours, {}, "t");
     LoopLimit book = loopLimit(ours, t, {LoopRules::Loop, LoopRules::Book});
     OsdLoopResult osd = refineLoopOpenSubdiv(control, levels, OsdBoundary::EdgeOnly);
+    std::vector<int> fromOurs = openSubdivIndexOfOurs(control, levels);
     for (size_t v = 0; v < ours.p.size(); ++v) {
       Vector3f expected;
       if (t.boundary[v]) {
         const std::vector<int>& r = t.rings[v];
         expected = ((ours.p[r.front()] - ours.p[v]) + (ours.p[r.back()] - ours.p[v])) / 30.f;
       }
-      EXPECT_LE(((book.p[v] - osd.limitP[osd.fromOurs[v]]) - expected).length(), tolerance) << v;
+      EXPECT_LE(((book.p[v] - osd.limitP[fromOurs[v]]) - expected).length(), tolerance) << v;
     }
   }
 }
@@ -193,13 +205,14 @@ TEST(LoopSubdivOpenSubdiv, EdgeAndCornerPinsCornersTheDraftDoesNot) {
   LoopTopology t0 = buildLoopTopology(control, {}, "t");
   for (int levels = 1; levels <= 3; ++levels) {
     OsdLoopResult pinned = refineLoopOpenSubdiv(control, levels, OsdBoundary::EdgeAndCorner);
+    std::vector<int> fromOurs = openSubdivIndexOfOurs(control, levels);
     LoopMesh ours = refineLoop(control, levels, {LoopRules::Loop, LoopRules::BSpline});
     int corners = 0;
     for (size_t v = 0; v < control.p.size(); ++v) {
       if (t0.rings[v].size() != 2) continue;
       ++corners;
-      EXPECT_EQ(pinned.refined.p[pinned.fromOurs[v]], control.p[v]);
-      EXPECT_EQ(pinned.limitP[pinned.fromOurs[v]], control.p[v]);
+      EXPECT_EQ(pinned.refined.p[fromOurs[v]], control.p[v]);
+      EXPECT_EQ(pinned.limitP[fromOurs[v]], control.p[v]);
       EXPECT_GT(distance(ours.p[v], control.p[v]), 1e-3f);
     }
     EXPECT_EQ(corners, 2);
