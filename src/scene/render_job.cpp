@@ -207,13 +207,18 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   // Sampler and integrator.
   PluginDesc samplerDesc = orDefault(desc.sampler, "stratified");
   int spp = options.sppOverride;
-  job.sampler =
-      createSampler(samplerDesc.name, samplerDesc.params, options.seed, spp, samplerDesc.loc);
   if (options.quick && spp == 0) {
-    int quickSpp = std::max(1, job.sampler->samplesPerPixel() / 8);
-    job.sampler = createSampler(samplerDesc.name, samplerDesc.params, options.seed, quickSpp,
-                                samplerDesc.loc);
+    // Without a warning sink: the count is the scene's and only the eighth of it is used.
+    int full = createSampler(samplerDesc.name, samplerDesc.params, options.seed, 0, samplerDesc.loc,
+                             [](const FileLoc&, const std::string&) {})
+                   ->samplesPerPixel();
+    spp = std::max(1, full / 8);
   }
+  // createSampler prints to standard error when given no sink; an empty sink here means quiet.
+  SamplerWarning samplerWarn = warn;
+  if (!samplerWarn) samplerWarn = [](const FileLoc&, const std::string&) {};
+  job.sampler = createSampler(samplerDesc.name, samplerDesc.params, options.seed, spp,
+                              samplerDesc.loc, samplerWarn);
   reportUnused(samplerDesc, warn);
   PluginDesc integratorDesc = !desc.integrator.name.empty()
                                   ? desc.integrator

@@ -1,0 +1,47 @@
+// Every warning of a scene build reaches BuildOptions::warn with its file:line:col (the command
+// line prints them, or, with -q, drops them): none goes to standard error on its own.
+#include <gtest/gtest.h>
+
+#include "support/render_scene.h"
+
+namespace candela {
+namespace {
+
+TEST(BuildWarnings, SamplerAndUnusedParametersReachTheSink) {
+  const char* scene = R"(Film "image" "integer xresolution" [8] "integer yresolution" [8]
+Sampler "lowdiscrepancy" "integer pixelsamples" [6]
+WorldBegin
+Shape "sphere" "float radius" [1] "float nonesuch" [2]
+WorldEnd
+)";
+  std::vector<std::string> warnings;
+  BuildOptions options;
+  options.warn = [&](const FileLoc& loc, const std::string& message) {
+    warnings.push_back(loc.str() + ": " + message);
+  };
+  testing::internal::CaptureStderr();
+  test::buildSceneText(scene, options);
+  std::string stderrText = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(stderrText, "");
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find("test.pbrt:2:"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("rounded up to the power of two 8"), std::string::npos);
+  EXPECT_NE(warnings[1].find("test.pbrt:4:"), std::string::npos) << warnings[1];
+  EXPECT_NE(warnings[1].find("nonesuch"), std::string::npos) << warnings[1];
+
+  // No sink (quiet): nothing at all, not even on standard error.
+  testing::internal::CaptureStderr();
+  test::buildSceneText(scene, BuildOptions{});
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  // --quick takes an eighth of the rounded count: 1, which needs no rounding, so only the unused
+  // parameter is reported.
+  warnings.clear();
+  options.quick = true;
+  test::RenderedScene quick = test::buildSceneText(scene, options);
+  EXPECT_EQ(quick.job().sampler->samplesPerPixel(), 1);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("nonesuch"), std::string::npos) << warnings[0];
+}
+
+}  // namespace
+}  // namespace candela
