@@ -100,7 +100,15 @@ TEST(ExrOutput, FloatRoundTripReadsAovChannelsByName) {
 
 TEST(ExrOutput, HalfRoundTrip) {
   TempDir dir;
-  ImageBuffer img = testImage(9, 5, kAovChannels);
+  std::vector<std::string> channels = kAovChannels;
+  for (const char* c : {"P.X", "P.Y", "P.Z", "samples"}) channels.push_back(c);
+  ImageBuffer img = testImage(9, 5, channels);
+  // Values half cannot hold exactly: a far position, a count above 2048.
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      img.at(x, y, img.channelIndex("P.X")) = 12345.678f + float(x);
+      img.at(x, y, img.channelIndex("samples")) = float(2049 + 2 * (x + 9 * y));
+    }
   writeExr(dir.path("half.exr"), img, {}, ExrOptions{.half = true});
   ImageBuffer back = readImage(dir.path("half.exr"));
   expectSameByName(img, back, 1e-3f);  // half has an 11-bit significand
@@ -110,10 +118,12 @@ TEST(ExrOutput, HalfRoundTrip) {
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) anyRounded |= back.at(x, y, r) != img.at(x, y, 0);
   EXPECT_TRUE(anyRounded);
-  // Depth stays 32-bit float.
-  const int z = back.channelIndex("Z");
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) EXPECT_EQ(back.at(x, y, z), img.at(x, y, 10));
+  // Depth, positions and sample counts stay 32-bit float.
+  for (const char* name : {"Z", "P.X", "P.Y", "P.Z", "samples"})
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x)
+        EXPECT_EQ(back.at(x, y, back.channelIndex(name)), img.at(x, y, img.channelIndex(name)))
+            << name;
 }
 
 TEST(ExrOutput, ChromaticitiesOfLinearRec709) {

@@ -185,11 +185,20 @@ void writeExr(const std::string& path, const ImageBuffer& image, const ImageMeta
                        options.half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
   spec.channelnames = image.channels;
   const int z = image.channelIndex("Z");
-  if (options.half && z >= 0) {
-    // Depth keeps 32 bits even in a half image: half's 11-bit significand and 65504 maximum are
-    // fine for colour, not for distances.
+  if (options.half) {
+    // Depth, positions and sample counts keep 32 bits even in a half image: half's 11-bit
+    // significand and 65504 maximum are fine for colour, not for distances, coordinates or counts
+    // above 2048.
     spec.channelformats.assign(size_t(image.channelCount()), OIIO::TypeDesc::HALF);
-    spec.channelformats[size_t(z)] = OIIO::TypeDesc::FLOAT;
+    bool anyFloat = false;
+    for (size_t c = 0; c < image.channels.size(); ++c) {
+      const std::string& name = image.channels[c];
+      if (name == "Z" || name.rfind("P.", 0) == 0 || name == "samples") {
+        spec.channelformats[c] = OIIO::TypeDesc::FLOAT;
+        anyFloat = true;
+      }
+    }
+    if (!anyFloat) spec.channelformats.clear();
   }
   spec.alpha_channel = image.alphaChannel();
   spec.z_channel = z;
