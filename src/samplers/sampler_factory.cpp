@@ -62,14 +62,17 @@ int powerOfTwoCount(int n, const std::string& what, const FileLoc& loc,
   return p;
 }
 
+// The scene's count is read (so validated, and not reported unused) even when --spp overrides it.
 int sampleCount(const ParamSet& params, int sppOverride, const FileLoc& loc) {
-  return sppOverride > 0 ? sppOverride : positiveCount(params, "pixelsamples", 4, loc);
+  int sceneCount = positiveCount(params, "pixelsamples", 4, loc);
+  return sppOverride > 0 ? sppOverride : sceneCount;
 }
 
 std::unique_ptr<Sampler> createAdaptive(const ParamSet& params, uint64_t seed, int sppOverride,
                                         const FileLoc& loc, const SamplerWarning& warn) {
   int minSamples = positiveCount(params, "minsamples", 4, loc);
-  int maxSamples = sppOverride > 0 ? sppOverride : positiveCount(params, "maxsamples", 32, loc);
+  int maxSamples = positiveCount(params, "maxsamples", 32, loc);
+  if (sppOverride > 0) maxSamples = sppOverride;
   minSamples = powerOfTwoCount(minSamples, "adaptive sampler: minsamples",
                                params.locationOf("minsamples", loc), warn);
   maxSamples = powerOfTwoCount(maxSamples, "adaptive sampler: maxsamples",

@@ -41,6 +41,14 @@ WorldEnd
   EXPECT_EQ(quick.job().sampler->samplesPerPixel(), 1);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("nonesuch"), std::string::npos) << warnings[0];
+  // --spp replaces the scene's pixelsamples, which is still read (and checked), so it is not
+  // reported unused.
+  warnings.clear();
+  options.quick = false;
+  options.sppOverride = 16;
+  EXPECT_EQ(test::buildSceneText(scene, options).job().sampler->samplesPerPixel(), 16);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("nonesuch"), std::string::npos) << warnings[0];
 }
 
 }  // namespace
