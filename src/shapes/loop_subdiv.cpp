@@ -18,6 +18,43 @@ Sum cross(const Sum& a, const Sum& b) {
   return Sum{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
+// The weights of each valence, made on first use: per vertex, the trigonometry would cost more
+// than the rest of the limit stage.
+class ValenceWeights {
+ public:
+  explicit ValenceWeights(LoopRules::Beta beta) : beta_(beta) {}
+  struct Weights {
+    double beta = 0, gamma = 0;
+    // Inside: cos and sin of 2πk/n. On a boundary of n ring vertices (n >= 5): the transverse
+    // tangent's weights of ring vertex k (draft §3.7).
+    std::vector<double> cos, sin, transverse;
+  };
+  const Weights& operator()(int n) {
+    if (n >= int(table_.size())) table_.resize(size_t(n) + 1);
+    Weights& w = table_[size_t(n)];
+    if (w.cos.empty()) {
+      w.beta = loopBeta(n, beta_);
+      w.gamma = loopLimitGamma(n, beta_);
+      for (int k = 0; k < n; ++k) {
+        double a = 2 * std::numbers::pi * k / n;
+        w.cos.push_back(std::cos(a));
+        w.sin.push_back(std::sin(a));
+      }
+      if (n >= 5) {
+        double theta = std::numbers::pi / (n - 1);
+        w.transverse.assign(size_t(n), -std::sin(theta));
+        for (int k = 1; k <= n - 2; ++k)
+          w.transverse[size_t(k)] = -(2 * std::cos(theta) - 2) * std::sin(k * theta);
+      }
+    }
+    return w;
+  }
+
+ private:
+  LoopRules::Beta beta_;
+  std::vector<Weights> table_;
+};
+
 }  // namespace
 
 double loopBeta(int n, LoopRules::Beta beta) {
@@ -34,10 +71,11 @@ LoopMesh refineLoopOnce(const LoopMesh& mesh, const LoopTopology& t, const LoopR
   int nv = int(mesh.p.size());
   LoopMesh out;
   out.p.resize(nv + t.edges.size());
+  ValenceWeights weights(rules.beta);
   // Even vertices (draft §3.7): inside (1 − nβ) v + β Σ ring; on a boundary (3/4) v + (1/8) (the
   // two boundary neighbours), which ignores the interior and so keeps boundaries shared.
   for (int v = 0; v < nv; ++v) {
-    const std::vector<int>& ring = t.rings[v];
+    std::span<const int> ring = t.ring(v);
     Sum s;
     if (ring.empty()) {
       s.add(mesh.p[v], 1);
@@ -47,7 +85,7 @@ LoopMesh refineLoopOnce(const LoopMesh& mesh, const LoopTopology& t, const LoopR
       s.add(mesh.p[ring.back()], 0.125);
     } else {
       int n = int(ring.size());
-      double b = loopBeta(n, rules.beta);
+      double b = weights(n).beta;
       s.add(mesh.p[v], 1 - n * b);
       for (int r : ring) s.add(mesh.p[r], b);
     }
@@ -96,7 +134,8 @@ namespace {
 // The transverse limit tangent at a boundary vertex whose ring has n vertices (valence n in the
 // draft: faces + 1), ring[0] and ring[n − 1] on the boundary; it points into the surface (draft
 // §3.7, after Hoppe et al. 1994).
-Sum boundaryTransverse(const LoopMesh& mesh, int v, const std::vector<int>& ring) {
+Sum boundaryTransverse(const LoopMesh& mesh, int v, std::span<const int> ring,
+                       ValenceWeights& weights) {
   int n = int(ring.size());
   auto P = [&](int k) { return mesh.p[ring[k]]; };
   Sum s;
@@ -107,10 +146,8 @@ Sum boundaryTransverse(const LoopMesh& mesh, int v, const std::vector<int>& ring
   } else if (n == 4) {
     s.add(P(0), -1), s.add(P(1), 2), s.add(P(2), 2), s.add(P(3), -1), s.add(mesh.p[v], -2);
   } else {
-    double theta = std::numbers::pi / (n - 1);
-    s.add(P(0), -std::sin(theta));
-    s.add(P(n - 1), -std::sin(theta));
-    for (int k = 1; k <= n - 2; ++k) s.add(P(k), -(2 * std::cos(theta) - 2) * std::sin(k * theta));
+    const std::vector<double>& w = weights(n).transverse;
+    for (int k = 0; k < n; ++k) s.add(P(k), w[size_t(k)]);
   }
   return s;
 }
@@ -122,8 +159,9 @@ LoopLimit loopLimit(const LoopMesh& mesh, const LoopTopology& t, const LoopRules
   LoopLimit out;
   out.p.resize(nv);
   out.n.resize(nv);
+  ValenceWeights weights(rules.beta);
   for (int v = 0; v < nv; ++v) {
-    const std::vector<int>& ring = t.rings[v];
+    std::span<const int> ring = t.ring(v);
     int n = int(ring.size());
     if (ring.empty()) {
       out.p[v] = mesh.p[v];
@@ -141,17 +179,16 @@ LoopLimit loopLimit(const LoopMesh& mesh, const LoopTopology& t, const LoopRules
       Sum along;
       along.add(mesh.p[ring.back()], 1);
       along.add(mesh.p[ring.front()], -1);
-      normal = cross(boundaryTransverse(mesh, v, ring), along);
+      normal = cross(boundaryTransverse(mesh, v, ring, weights), along);
     } else {
-      double g = loopLimitGamma(n, rules.beta);
-      p.add(mesh.p[v], 1 - n * g);
+      const ValenceWeights::Weights& w = weights(n);
+      p.add(mesh.p[v], 1 - n * w.gamma);
       // S and T weigh the counter-clockwise ring by cos and sin: S × T follows the winding.
       Sum s, tt;
       for (int k = 0; k < n; ++k) {
-        p.add(mesh.p[ring[k]], g);
-        double a = 2 * std::numbers::pi * k / n;
-        s.add(mesh.p[ring[k]], std::cos(a));
-        tt.add(mesh.p[ring[k]], std::sin(a));
+        p.add(mesh.p[ring[k]], w.gamma);
+        s.add(mesh.p[ring[k]], w.cos[size_t(k)]);
+        tt.add(mesh.p[ring[k]], w.sin[size_t(k)]);
       }
       normal = cross(s, tt);
     }

@@ -4,6 +4,7 @@
 // manifold triangle mesh, open or closed.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -45,11 +46,18 @@ struct LoopTopology {
   std::vector<Edge> edges;
   // Three per face: faceEdges[3 f + i] is the edge from corner i to corner i + 1.
   std::vector<int> faceEdges;
-  // Per vertex, the neighbours in counter-clockwise order (as the faces wind). On a boundary the
-  // first and last are the neighbours along the boundary, and the ring has one more vertex than
-  // the vertex has faces; inside, one per face. Empty for a vertex no face uses.
-  std::vector<std::vector<int>> rings;
+  // Vertex v's neighbours in counter-clockwise order (as the faces wind). On a boundary the first
+  // and last are the neighbours along the boundary, and the ring has one more vertex than the
+  // vertex has faces; inside, one per face. Empty for a vertex no face uses.
+  std::span<const int> ring(int v) const {
+    return {ringVertices.data() + ringStart[v], size_t(ringSize[v])};
+  }
   std::vector<char> boundary;  // per vertex
+
+  // The rings, flat: vertex v's occupies ringSize[v] entries from ringStart[v] (one per face
+  // around it, plus one reserved for a boundary), so a level's rings are three allocations, not
+  // one per vertex.
+  std::vector<int> ringVertices, ringStart, ringSize;
 
   // The vertex of face f that is on neither end of edge e (e must be an edge of f).
   int opposite(const LoopMesh& mesh, int f, int e) const;

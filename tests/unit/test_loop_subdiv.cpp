@@ -144,7 +144,7 @@ TEST(LoopSubdiv, BoundaryLimitRules) {
       EXPECT_EQ(book.p[v], spline.p[v]);
       continue;
     }
-    const std::vector<int>& ring = t.rings[v];
+    std::span<const int> ring = t.ring(v);
     Vector3f d = ((m.p[ring.front()] - m.p[v]) + (m.p[ring.back()] - m.p[v])) / 30.f;
     EXPECT_LT(((book.p[v] - spline.p[v]) - d).length(), 1e-5f) << v;
   }
