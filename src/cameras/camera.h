@@ -5,8 +5,8 @@
 #include <memory>
 #include <string>
 
+#include "core/animated_transform.h"
 #include "core/paramset.h"
-#include "core/transform.h"
 #include "samplers/sampler.h"
 
 namespace candela {
@@ -22,8 +22,14 @@ class Camera {
 };
 
 // The camera named by a Camera statement ("perspective", "orthographic" or "environment"), with
-// pbrt-v2's parameters and defaults; cameraToWorld is the inverse of the CTM at the statement,
-// fullResolution the film's. An unknown name or a bad value is a SceneError at loc.
+// pbrt-v2's parameters and defaults; cameraToWorld is the inverse of the CTM at the statement at
+// the two transform times, fullResolution the film's. A moving camera takes each ray to world
+// space by the transform at the ray's time (pbrt 2e §6.1). An unknown name or a bad value is a
+// SceneError at loc.
+std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
+                                     const AnimatedTransform& cameraToWorld,
+                                     const Point2i& fullResolution, const FileLoc& loc);
+// A camera that stands still.
 std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
                                      const Transform& cameraToWorld, const Point2i& fullResolution,
                                      const FileLoc& loc);

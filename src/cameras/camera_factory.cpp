@@ -90,8 +90,8 @@ EnvironmentCameraOptions environmentOptions(const ParamSet& params, const Point2
 }  // namespace
 
 std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
-                                     const Transform& cameraToWorld, const Point2i& fullResolution,
-                                     const FileLoc& loc) {
+                                     const AnimatedTransform& cameraToWorld,
+                                     const Point2i& fullResolution, const FileLoc& loc) {
   if (fullResolution.x < 1 || fullResolution.y < 1)
     throw SceneError(loc, "camera: image resolution must be positive");
   if (name == "perspective")
@@ -105,6 +105,12 @@ std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& pa
                                                environmentOptions(params, fullResolution, loc));
   throw SceneError(
       loc, "unknown camera \"" + name + "\" (known: perspective, orthographic, environment)");
+}
+
+std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
+                                     const Transform& cameraToWorld, const Point2i& fullResolution,
+                                     const FileLoc& loc) {
+  return createCamera(name, params, AnimatedTransform(cameraToWorld), fullResolution, loc);
 }
 
 }  // namespace candela

@@ -2,7 +2,7 @@
 
 namespace candela {
 
-EnvironmentCamera::EnvironmentCamera(const Transform& cameraToWorld,
+EnvironmentCamera::EnvironmentCamera(const AnimatedTransform& cameraToWorld,
                                      const EnvironmentCameraOptions& options)
     : cameraToWorld_(cameraToWorld), options_(options) {}
 
@@ -13,33 +13,50 @@ Vector3f EnvironmentCamera::cameraDirection(const Point2f& pRaster) const {
   return Vector3f(sinTheta * std::cos(phi), std::cos(theta), sinTheta * std::sin(phi));
 }
 
-Ray EnvironmentCamera::worldRay(const Point2f& pRaster, Float time) const {
-  Vector3f d = cameraToWorld_(cameraDirection(pRaster));
+Ray EnvironmentCamera::worldRay(const Transform& cameraToWorld, const Point2f& pRaster,
+                                Float time) const {
+  Vector3f d = cameraToWorld(cameraDirection(pRaster));
   // cameraToWorld may scale: distances along the ray are in camera units, so the clipping
   // radii scale with the direction's length before it is normalized.
   Float len = d.length();
-  Point3f origin = cameraToWorld_(Point3f(0, 0, 0));
+  Point3f origin = cameraToWorld(Point3f(0, 0, 0));
   Vector3f dir = d / len;
   return Ray(origin + dir * (options_.hither * len), dir, (options_.yon - options_.hither) * len,
              time);
 }
 
+RayDifferential EnvironmentCamera::worldRayDifferential(const Transform& cameraToWorld,
+                                                        const Point2f& pRaster, Float time) const {
+  RayDifferential ray(worldRay(cameraToWorld, pRaster, time));
+  // The offset rays at the same instant, under the same transform as the main ray.
+  Ray rx = worldRay(cameraToWorld, Point2f(pRaster.x + 1, pRaster.y), time);
+  Ray ry = worldRay(cameraToWorld, Point2f(pRaster.x, pRaster.y + 1), time);
+  ray.rxOrigin = rx.o;
+  ray.rxDirection = rx.d;
+  ray.ryOrigin = ry.o;
+  ray.ryDirection = ry.d;
+  ray.hasDifferentials = true;
+  return ray;
+}
+
+// As for the projective cameras: a still camera's transform is used as is, a moving camera's is
+// interpolated at the ray's time (pbrt 2e §6.1).
 Float EnvironmentCamera::generateRay(const CameraSample& sample, Ray* ray) const {
-  *ray = worldRay(sample.pFilm, lerp(sample.time, options_.shutterOpen, options_.shutterClose));
+  Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
+  if (cameraToWorld_.isAnimated())
+    *ray = worldRay(cameraToWorld_.interpolate(time), sample.pFilm, time);
+  else
+    *ray = worldRay(cameraToWorld_.start(), sample.pFilm, time);
   return 1;
 }
 
 Float EnvironmentCamera::generateRayDifferential(const CameraSample& sample,
                                                  RayDifferential* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = RayDifferential(worldRay(sample.pFilm, time));
-  Ray rx = worldRay(Point2f(sample.pFilm.x + 1, sample.pFilm.y), time);
-  Ray ry = worldRay(Point2f(sample.pFilm.x, sample.pFilm.y + 1), time);
-  ray->rxOrigin = rx.o;
-  ray->rxDirection = rx.d;
-  ray->ryOrigin = ry.o;
-  ray->ryDirection = ry.d;
-  ray->hasDifferentials = true;
+  if (cameraToWorld_.isAnimated())
+    *ray = worldRayDifferential(cameraToWorld_.interpolate(time), sample.pFilm, time);
+  else
+    *ray = worldRayDifferential(cameraToWorld_.start(), sample.pFilm, time);
   return 1;
 }
 

@@ -23,19 +23,23 @@ struct EnvironmentCameraOptions {
 
 class EnvironmentCamera final : public Camera {
  public:
-  EnvironmentCamera(const Transform& cameraToWorld, const EnvironmentCameraOptions& options);
+  EnvironmentCamera(const AnimatedTransform& cameraToWorld,
+                    const EnvironmentCameraOptions& options);
   Float generateRay(const CameraSample& sample, Ray* ray) const override;
   // The differential rays are the directions one pixel over in x and y, from the same origin.
   Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const override;
 
   const EnvironmentCameraOptions& options() const { return options_; }
+  const AnimatedTransform& cameraToWorld() const { return cameraToWorld_; }
   // The camera-space unit direction for a raster position (the formulas above).
   Vector3f cameraDirection(const Point2f& pRaster) const;
 
  private:
-  Ray worldRay(const Point2f& pRaster, Float time) const;
+  Ray worldRay(const Transform& cameraToWorld, const Point2f& pRaster, Float time) const;
+  RayDifferential worldRayDifferential(const Transform& cameraToWorld, const Point2f& pRaster,
+                                       Float time) const;
 
-  Transform cameraToWorld_;
+  AnimatedTransform cameraToWorld_;
   EnvironmentCameraOptions options_;
 };
 

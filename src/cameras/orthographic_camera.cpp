@@ -3,7 +3,7 @@
 namespace candela {
 
 // The pinhole ray through screen point s starts at (s, 0) and runs along +z.
-OrthographicCamera::OrthographicCamera(const Transform& cameraToWorld,
+OrthographicCamera::OrthographicCamera(const AnimatedTransform& cameraToWorld,
                                        const ProjectiveCameraOptions& options)
     : ProjectiveCamera(cameraToWorld, options, 1, 0) {}
 

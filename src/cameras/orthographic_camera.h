@@ -11,7 +11,8 @@ namespace candela {
 
 class OrthographicCamera final : public ProjectiveCamera {
  public:
-  OrthographicCamera(const Transform& cameraToWorld, const ProjectiveCameraOptions& options);
+  OrthographicCamera(const AnimatedTransform& cameraToWorld,
+                     const ProjectiveCameraOptions& options);
 };
 
 }  // namespace candela

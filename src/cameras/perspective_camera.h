@@ -13,7 +13,8 @@ struct PerspectiveCameraOptions : ProjectiveCameraOptions {
 
 class PerspectiveCamera final : public ProjectiveCamera {
  public:
-  PerspectiveCamera(const Transform& cameraToWorld, const PerspectiveCameraOptions& options);
+  PerspectiveCamera(const AnimatedTransform& cameraToWorld,
+                    const PerspectiveCameraOptions& options);
   const PerspectiveCameraOptions& options() const { return perspectiveOptions_; }
 
  private:

@@ -10,7 +10,7 @@ Bounds2f defaultScreenWindow(Float frameAspectRatio) {
   return Bounds2f(Point2f(-1, -1 / frameAspectRatio), Point2f(1, 1 / frameAspectRatio));
 }
 
-ProjectiveCamera::ProjectiveCamera(const Transform& cameraToWorld,
+ProjectiveCamera::ProjectiveCamera(const AnimatedTransform& cameraToWorld,
                                    const ProjectiveCameraOptions& options, Float originScale,
                                    Float directionScale)
     : cameraToWorld_(cameraToWorld), options_(options) {
@@ -60,42 +60,64 @@ void ProjectiveCamera::lensRay(Point3f o, Vector3f d, const Point2f& uLens, Poin
   *tMax = (options_.yon - options_.hither) / d.z;
 }
 
-Ray ProjectiveCamera::toWorld(const Point3f& o, const Vector3f& d, Float tMax, Float time) const {
-  Vector3f dw = cameraToWorld_(d);
+Ray ProjectiveCamera::toWorld(const Transform& cameraToWorld, const Point3f& o, const Vector3f& d,
+                              Float tMax, Float time) {
+  Vector3f dw = cameraToWorld(d);
   Float len = dw.length();
-  return Ray(cameraToWorld_(o), dw / len, tMax * len, time);
+  return Ray(cameraToWorld(o), dw / len, tMax * len, time);
 }
 
-Float ProjectiveCamera::generateRay(const CameraSample& sample, Ray* ray) const {
+Ray ProjectiveCamera::cameraRay(const CameraSample& sample, Float time,
+                                const Transform& cameraToWorld) const {
   Point3f o, origin;
   Vector3f d, dir;
   Float tMax;
   pinholeRay(sample.pFilm, &o, &d);
   lensRay(o, d, sample.pLens, &origin, &dir, &tMax);
+  return toWorld(cameraToWorld, origin, dir, tMax, time);
+}
+
+RayDifferential ProjectiveCamera::cameraRayDifferential(const CameraSample& sample, Float time,
+                                                        const Transform& cameraToWorld) const {
+  Point3f o, origin;
+  Vector3f d, dir;
+  Float tMax, unused;
+  pinholeRay(sample.pFilm, &o, &d);
+  lensRay(o, d, sample.pLens, &origin, &dir, &tMax);
+  RayDifferential ray(toWorld(cameraToWorld, origin, dir, tMax, time));
+  // One pixel over moves the pinhole ray by the affine map's x and y steps. The offset rays are
+  // taken to world space by the same transform as the main ray: differentials describe the
+  // footprint at one instant, not the camera's motion.
+  lensRay(o + oDx_, d + dDx_, sample.pLens, &origin, &dir, &unused);
+  Ray rx = toWorld(cameraToWorld, origin, dir, kInfinity, time);
+  lensRay(o + oDy_, d + dDy_, sample.pLens, &origin, &dir, &unused);
+  Ray ry = toWorld(cameraToWorld, origin, dir, kInfinity, time);
+  ray.rxOrigin = rx.o;
+  ray.rxDirection = rx.d;
+  ray.ryOrigin = ry.o;
+  ray.ryDirection = ry.d;
+  ray.hasDifferentials = true;
+  return ray;
+}
+
+// A still camera uses its one transform as is, with no per-ray interpolation; a moving one takes
+// the ray to world space by the transform at the ray's time (pbrt 2e §6.1).
+Float ProjectiveCamera::generateRay(const CameraSample& sample, Ray* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = toWorld(origin, dir, tMax, time);
+  if (cameraToWorld_.isAnimated())
+    *ray = cameraRay(sample, time, cameraToWorld_.interpolate(time));
+  else
+    *ray = cameraRay(sample, time, cameraToWorld_.start());
   return 1;
 }
 
 Float ProjectiveCamera::generateRayDifferential(const CameraSample& sample,
                                                 RayDifferential* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  Point3f o, origin;
-  Vector3f d, dir;
-  Float tMax, unused;
-  pinholeRay(sample.pFilm, &o, &d);
-  lensRay(o, d, sample.pLens, &origin, &dir, &tMax);
-  *ray = RayDifferential(toWorld(origin, dir, tMax, time));
-  // One pixel over moves the pinhole ray by the affine map's x and y steps.
-  lensRay(o + oDx_, d + dDx_, sample.pLens, &origin, &dir, &unused);
-  Ray rx = toWorld(origin, dir, kInfinity, time);
-  lensRay(o + oDy_, d + dDy_, sample.pLens, &origin, &dir, &unused);
-  Ray ry = toWorld(origin, dir, kInfinity, time);
-  ray->rxOrigin = rx.o;
-  ray->rxDirection = rx.d;
-  ray->ryOrigin = ry.o;
-  ray->ryDirection = ry.d;
-  ray->hasDifferentials = true;
+  if (cameraToWorld_.isAnimated())
+    *ray = cameraRayDifferential(sample, time, cameraToWorld_.interpolate(time));
+  else
+    *ray = cameraRayDifferential(sample, time, cameraToWorld_.start());
   return 1;
 }
 

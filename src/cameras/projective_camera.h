@@ -33,7 +33,7 @@ class ProjectiveCamera : public Camera {
   // point (pbrt 3e §6.2.3, §6.2.1).
   Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const final;
 
-  const Transform& cameraToWorld() const { return cameraToWorld_; }
+  const AnimatedTransform& cameraToWorld() const { return cameraToWorld_; }
   const ProjectiveCameraOptions& projectiveOptions() const { return options_; }
   Float shutterOpen() const { return options_.shutterOpen; }
   Float shutterClose() const { return options_.shutterClose; }
@@ -43,7 +43,7 @@ class ProjectiveCamera : public Camera {
   Point2f rasterToScreen(const Point2f& pRaster) const;
 
  protected:
-  ProjectiveCamera(const Transform& cameraToWorld, const ProjectiveCameraOptions& options,
+  ProjectiveCamera(const AnimatedTransform& cameraToWorld, const ProjectiveCameraOptions& options,
                    Float originScale, Float directionScale);
 
  private:
@@ -54,9 +54,16 @@ class ProjectiveCamera : public Camera {
   void lensRay(Point3f o, Vector3f d, const Point2f& uLens, Point3f* origin, Vector3f* dir,
                Float* tMax) const;
   // To world space with a unit direction (cameraToWorld may scale).
-  Ray toWorld(const Point3f& o, const Vector3f& d, Float tMax, Float time) const;
+  static Ray toWorld(const Transform& cameraToWorld, const Point3f& o, const Vector3f& d,
+                     Float tMax, Float time);
+  // generateRay and generateRayDifferential under one camera-to-world transform: the camera's
+  // own when it stands still, the one at the ray's time when it moves. Everything cached above
+  // is in camera space, so it holds at every time.
+  Ray cameraRay(const CameraSample& sample, Float time, const Transform& cameraToWorld) const;
+  RayDifferential cameraRayDifferential(const CameraSample& sample, Float time,
+                                        const Transform& cameraToWorld) const;
 
-  Transform cameraToWorld_;
+  AnimatedTransform cameraToWorld_;
   ProjectiveCameraOptions options_;
   // Raster -> pinhole ray is affine: o = o0 + x oDx + y oDy, d = d0 + x dDx + y dDy.
   Point3f o0_;

@@ -200,7 +200,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   reportUnused(filterDesc, warn);
   CameraDesc camDesc = desc.camera;
   if (camDesc.name.empty()) camDesc.name = "perspective";
-  job.camera = createCamera(camDesc.name, camDesc.params, camDesc.cameraToWorld.start,
+  job.camera = createCamera(camDesc.name, camDesc.params, animated(camDesc.cameraToWorld),
                             job.film->fullResolution(), camDesc.loc);
   reportUnused(camDesc, warn);
 
