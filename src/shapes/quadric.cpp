@@ -23,9 +23,9 @@ double dot3(const double a[3], const double b[3]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// Whether t's linear part keeps spheres spheres; *scale is the cube root of |det| (exact for a
-// similarity).
-bool isSimilarity(const Transform& t, double* scale) {
+// Whether t is affine and its linear part keeps spheres spheres; *scale is the cube root of |det|
+// (exact for a similarity).
+bool similarityScale(const Transform& t, double* scale) {
   const auto& m = t.matrix().m;
   double c[3][3];
   for (int j = 0; j < 3; ++j)
@@ -34,6 +34,7 @@ bool isSimilarity(const Transform& t, double* scale) {
                c[0][1] * (c[1][0] * c[2][2] - c[1][2] * c[2][0]) +
                c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0]);
   *scale = std::cbrt(std::abs(det));
+  if (m[3][0] != 0 || m[3][1] != 0 || m[3][2] != 0 || m[3][3] != 1) return false;
   double s2 = *scale * *scale, tol = 1e-4 * s2;
   for (int i = 0; i < 3; ++i) {
     if (std::abs(dot3(c[i], c[i]) - s2) > tol) return false;
@@ -68,12 +69,13 @@ Quadric::Quadric(const Transform& objectToWorld, bool reverseOrientation)
   }
   for (int i = 0; i < 3; ++i)
     w2o_[i][3] = -(w2o_[i][0] * A[0][3] + w2o_[i][1] * A[1][3] + w2o_[i][2] * A[2][3]);
-  double scale;
-  isSimilarity(objectToWorld_, &scale);
-  areaScale_ = scale * scale;
+  isSimilarity_ = similarityScale(objectToWorld_, &worldScale_);
 }
 
 double Quadric::azimuth(double x, double y) {
+  // On the axis phi is undefined; 0 whatever the zeros' signs (atan2(-0, -0) is -pi), so that a
+  // pole or apex hit is inside every sweep.
+  if (x == 0 && y == 0) return 0;
   double phi = std::atan2(y, x);
   return phi < 0 ? phi + 2 * std::numbers::pi : phi;
 }
@@ -214,6 +216,10 @@ Point3f Quadric::toWorld(const double p[3], Vector3f* pError) const {
   return pw;
 }
 
+void Quadric::toObjectVector(const Vector3f& w, double v[3]) const {
+  for (int i = 0; i < 3; ++i) v[i] = w2o_[i][0] * w.x + w2o_[i][1] * w.y + w2o_[i][2] * w.z;
+}
+
 void Quadric::weingarten(const LocalGeometry& g, Normal3f* dndu, Normal3f* dndv) {
   // Coefficients of the first (E, F, G) and second (e, f, g) fundamental forms, then dn/du, dn/dv
   // as combinations of dp/du, dp/dv (lrt draft §3.2.4).
@@ -276,7 +282,7 @@ bool Quadric::intersect(const Ray& ray, Float* tHit, SurfaceInteraction* isect) 
   return true;
 }
 
-Float Quadric::area() const { return Float(objectArea_ * areaScale_); }
+Float Quadric::area() const { return Float(objectArea_ * worldScale_ * worldScale_); }
 
 Interaction Quadric::sample(const Point2f& u, Float* pdf) const {
   double p[3];

@@ -1,8 +1,8 @@
 // What the quadrics share (lrt draft §3.2–3.5): the world/object maps in double precision, the
 // ray-quadric root search with its floating-point guard, the hit point's error bound, the
-// Weingarten equations, world bounds, area and area sampling. Each quadric supplies its implicit
-// function, parameterisation and ranges. (SphereShape predates this class and keeps its own copy
-// of the same method; see sphere.h.)
+// Weingarten equations, world bounds, area and area sampling. Each quadric (sphere, cylinder,
+// disk, cone, paraboloid, hyperboloid) supplies its implicit function, parameterisation and
+// ranges.
 //
 // Robustness (pbrt 3e §3.9, in double where pbrt uses EFloat): the ray goes to object space in
 // double through the inverse of the float objectToWorld matrix computed in double, so a quadric
@@ -27,8 +27,7 @@ class Quadric : public Shape {
   bool intersectP(const Ray& ray) const override;
   // World-space area: the object-space area times the area scale of objectToWorld. Exact for
   // similarity transforms (rotation, translation, uniform scale); otherwise the uniform scale of
-  // equal volume is used, an approximation (as SphereShape does). DiskShape overrides it with the
-  // exact value.
+  // equal volume is used, an approximation. DiskShape overrides it with the exact value.
   Float area() const override;
   // Uniform by object-space area, hence by world area under a similarity transform; *pdf = 1/area.
   Interaction sample(const Point2f& u, Float* pdf) const override;
@@ -73,8 +72,19 @@ class Quadric : public Shape {
   static double phiMaxRadians(Float phiMaxDeg);
   // The smallest distance from the axis at which tangents are evaluated: a hit closer to the
   // axis (a pole or apex, where phi is undefined and dp/du vanishes) is evaluated this far out,
-  // 1e-5 of the shape's radius, like SphereShape's pole nudge (pbrt 3e §3.2.2).
+  // 1e-5 of the shape's radius: pbrt 3e's pole nudge for the sphere (§3.2.2), for every axis.
   static constexpr double kAxisNudge = 1e-5;
+
+  // An object-space point near the surface in world space, with its error bound: the transform's
+  // rounding plus the point's distance from the exact surface (from F's residual).
+  Point3f toWorld(const double p[3], Vector3f* pError) const;
+  // A world-space vector in object space, in double (the inverse's linear part).
+  void toObjectVector(const Vector3f& w, double v[3]) const;
+  // Whether objectToWorld keeps spheres spheres (a similarity), and its scale: world length per
+  // object length, exact for similarities (otherwise that of equal volume).
+  bool isSimilarity() const { return isSimilarity_; }
+  bool reverseOrientation() const { return reverseOrientation_; }
+  double worldScale() const { return worldScale_; }
 
  private:
   struct Hit {
@@ -82,9 +92,6 @@ class Quadric : public Shape {
     double p[3];  // object space
   };
   bool findHit(const Ray& ray, Hit* hit) const;
-  // An object-space point near the surface in world space, with its error bound: the transform's
-  // rounding plus the point's distance from the exact surface (from F's residual).
-  Point3f toWorld(const double p[3], Vector3f* pError) const;
   // The outward object-space normal's derivatives (Weingarten equations, lrt draft §3.2.4).
   static void weingarten(const LocalGeometry& g, Normal3f* dndu, Normal3f* dndv);
   double objectExtent() const;
@@ -93,7 +100,8 @@ class Quadric : public Shape {
   double o2w_[3][4], w2o_[3][4];  // the affine rows; w2o_ is o2w_'s inverse, computed in double
   bool invertible_;
   bool reverseOrientation_, transformSwapsHandedness_;
-  double areaScale_;  // world area per object area (exact for similarities)
+  bool isSimilarity_;
+  double worldScale_;
 };
 
 // The sweep angle of a quadric's parameters: pbrt's "phimax", or the lrt draft's name for the same

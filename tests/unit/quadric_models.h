@@ -16,6 +16,7 @@
 #include "shapes/disk.h"
 #include "shapes/hyperboloid.h"
 #include "shapes/paraboloid.h"
+#include "shapes/sphere.h"
 
 namespace candela::test {
 
@@ -69,6 +70,28 @@ struct QuadricModel {
 };
 
 inline double toRad(double deg) { return deg * std::numbers::pi / 180; }
+
+inline QuadricModel sphereModel(double r, double zMin, double zMax, double phiMaxDeg) {
+  double phiMax = toRad(phiMaxDeg), thetaMin = std::acos(zMin / r), thetaMax = std::acos(zMax / r);
+  QuadricModel m;
+  m.name = "sphere";
+  m.size = r;
+  m.make = [=](const Transform& t, bool rev) {
+    return std::make_unique<SphereShape>(t, rev, Float(r), Float(zMin), Float(zMax),
+                                         Float(phiMaxDeg));
+  };
+  m.P = [=](double u, double v) {
+    double phi = u * phiMax, theta = thetaMin + v * (thetaMax - thetaMin);
+    return D3{r * std::sin(theta) * std::cos(phi), r * std::sin(theta) * std::sin(phi),
+              r * std::cos(theta)};
+  };
+  m.uvOf = [=](const D3& p) {
+    double theta = std::atan2(std::hypot(p[0], p[1]), p[2]);
+    return Point2f(Float(azimuthD(p[0], p[1]) / phiMax),
+                   Float((theta - thetaMin) / (thetaMax - thetaMin)));
+  };
+  return m;
+}
 
 inline QuadricModel cylinderModel(double r, double zMin, double zMax, double phiMaxDeg) {
   double phiMax = toRad(phiMaxDeg);
@@ -169,12 +192,15 @@ inline QuadricModel hyperboloidModel(const D3& p1, const D3& p2, double phiMaxDe
   return m;
 }
 
-// Partial shapes of every kind, including the singular ones (apex, centre) and the orientations
-// whose parameterisation points inward (negative cone height, hyperboloid with p2 below p1).
+// Partial shapes of every kind, including the singular ones (apex, centre, pole) and the
+// orientations whose parameterisation points inward (negative cone height, hyperboloid with p2
+// below p1). No full sphere: its solid-angle sampling covers the visible cone, not the area.
 inline std::vector<QuadricModel> allModels() {
   QuadricModel throughAxis = hyperboloidModel({1, 0, 0}, {-0.5, 0, 1}, 360);
   throughAxis.apexV = 2.0 / 3;
-  return {cylinderModel(1.5, -0.5, 1, 270),
+  return {sphereModel(1.2, -0.7, 0.9, 260),
+          sphereModel(0.9, -0.9, 0.4, 360),
+          cylinderModel(1.5, -0.5, 1, 270),
           cylinderModel(0.7, 0, 2, 360),
           diskModel(0.3, 1.2, 0.4, 300),
           diskModel(-0.2, 1, 0, 360),

@@ -1,4 +1,4 @@
-// Cylinder, disk, cone, paraboloid, hyperboloid: analytic hits, partial-sweep clipping,
+// Sphere, cylinder, disk, cone, paraboloid, hyperboloid: analytic hits, partial-sweep clipping,
 // differential geometry against an independent model of each parameterisation (quadric_models.h),
 // orientation under ReverseOrientation and mirrors, singular points, bad rays, factories.
 #include <gtest/gtest.h>
@@ -158,6 +158,8 @@ TEST(Quadrics, PartialSweepClipsExactly) {
   };
   Transform t = rotate(25, Vector3f(1, 1, 0));
   std::vector<Pair> pairs;
+  pairs.push_back({std::make_unique<SphereShape>(t, false, 1, -0.8f, 0.9f, 230),
+                   std::make_unique<SphereShape>(t, false, 1, -0.8f, 0.9f, 360), 230});
   pairs.push_back({std::make_unique<CylinderShape>(t, false, 1, -1, 1, 200),
                    std::make_unique<CylinderShape>(t, false, 1, -1, 1, 360), 200});
   pairs.push_back({std::make_unique<DiskShape>(t, false, 0.2f, 1, 0.3f, 120),
