@@ -18,11 +18,7 @@ Float Camera::generateRayDifferential(const CameraSample& sample, RayDifferentia
   Ray ry;
   Float wy = generateRay(shifted, &ry);
   if (wx == 0 || wy == 0) return weight;  // no differentials past the image's edge of validity
-  ray->rxOrigin = rx.o;
-  ray->rxDirection = rx.d;
-  ray->ryOrigin = ry.o;
-  ray->ryDirection = ry.d;
-  ray->hasDifferentials = true;
+  *ray = RayDifferential(main, rx, ry);
   return weight;
 }
 

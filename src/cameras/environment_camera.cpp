@@ -27,36 +27,23 @@ Ray EnvironmentCamera::worldRay(const Transform& cameraToWorld, const Point2f& p
 
 RayDifferential EnvironmentCamera::worldRayDifferential(const Transform& cameraToWorld,
                                                         const Point2f& pRaster, Float time) const {
-  RayDifferential ray(worldRay(cameraToWorld, pRaster, time));
   // The offset rays at the same instant, under the same transform as the main ray.
-  Ray rx = worldRay(cameraToWorld, Point2f(pRaster.x + 1, pRaster.y), time);
-  Ray ry = worldRay(cameraToWorld, Point2f(pRaster.x, pRaster.y + 1), time);
-  ray.rxOrigin = rx.o;
-  ray.rxDirection = rx.d;
-  ray.ryOrigin = ry.o;
-  ray.ryDirection = ry.d;
-  ray.hasDifferentials = true;
-  return ray;
+  return RayDifferential(worldRay(cameraToWorld, pRaster, time),
+                         worldRay(cameraToWorld, Point2f(pRaster.x + 1, pRaster.y), time),
+                         worldRay(cameraToWorld, Point2f(pRaster.x, pRaster.y + 1), time));
 }
 
-// As for the projective cameras: a still camera's transform is used as is, a moving camera's is
-// interpolated at the ray's time (pbrt 2e §6.1).
+// As for the projective cameras: the transform at the ray's time (pbrt 2e §6.1).
 Float EnvironmentCamera::generateRay(const CameraSample& sample, Ray* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  if (cameraToWorld_.isAnimated())
-    *ray = worldRay(cameraToWorld_.interpolate(time), sample.pFilm, time);
-  else
-    *ray = worldRay(cameraToWorld_.start(), sample.pFilm, time);
+  *ray = worldRay(cameraToWorld_.interpolate(time), sample.pFilm, time);
   return 1;
 }
 
 Float EnvironmentCamera::generateRayDifferential(const CameraSample& sample,
                                                  RayDifferential* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  if (cameraToWorld_.isAnimated())
-    *ray = worldRayDifferential(cameraToWorld_.interpolate(time), sample.pFilm, time);
-  else
-    *ray = worldRayDifferential(cameraToWorld_.start(), sample.pFilm, time);
+  *ray = worldRayDifferential(cameraToWorld_.interpolate(time), sample.pFilm, time);
   return 1;
 }
 

@@ -84,7 +84,7 @@ RayDifferential ProjectiveCamera::cameraRayDifferential(const CameraSample& samp
   Float tMax, unused;
   pinholeRay(sample.pFilm, &o, &d);
   lensRay(o, d, sample.pLens, &origin, &dir, &tMax);
-  RayDifferential ray(toWorld(cameraToWorld, origin, dir, tMax, time));
+  Ray main = toWorld(cameraToWorld, origin, dir, tMax, time);
   // One pixel over moves the pinhole ray by the affine map's x and y steps. The offset rays are
   // taken to world space by the same transform as the main ray: differentials describe the
   // footprint at one instant, not the camera's motion.
@@ -92,32 +92,21 @@ RayDifferential ProjectiveCamera::cameraRayDifferential(const CameraSample& samp
   Ray rx = toWorld(cameraToWorld, origin, dir, kInfinity, time);
   lensRay(o + oDy_, d + dDy_, sample.pLens, &origin, &dir, &unused);
   Ray ry = toWorld(cameraToWorld, origin, dir, kInfinity, time);
-  ray.rxOrigin = rx.o;
-  ray.rxDirection = rx.d;
-  ray.ryOrigin = ry.o;
-  ray.ryDirection = ry.d;
-  ray.hasDifferentials = true;
-  return ray;
+  return RayDifferential(main, rx, ry);
 }
 
-// A still camera uses its one transform as is, with no per-ray interpolation; a moving one takes
-// the ray to world space by the transform at the ray's time (pbrt 2e §6.1).
+// A moving camera takes the ray to world space by the transform at the ray's time (pbrt 2e §6.1);
+// for a still one interpolate() is its one transform.
 Float ProjectiveCamera::generateRay(const CameraSample& sample, Ray* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  if (cameraToWorld_.isAnimated())
-    *ray = cameraRay(sample, time, cameraToWorld_.interpolate(time));
-  else
-    *ray = cameraRay(sample, time, cameraToWorld_.start());
+  *ray = cameraRay(sample, time, cameraToWorld_.interpolate(time));
   return 1;
 }
 
 Float ProjectiveCamera::generateRayDifferential(const CameraSample& sample,
                                                 RayDifferential* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  if (cameraToWorld_.isAnimated())
-    *ray = cameraRayDifferential(sample, time, cameraToWorld_.interpolate(time));
-  else
-    *ray = cameraRayDifferential(sample, time, cameraToWorld_.start());
+  *ray = cameraRayDifferential(sample, time, cameraToWorld_.interpolate(time));
   return 1;
 }
 

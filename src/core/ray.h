@@ -26,6 +26,14 @@ struct RayDifferential : Ray {
   RayDifferential(const Point3f& o_, const Vector3f& d_, Float tMax_ = kInfinity, Float time_ = 0)
       : Ray(o_, d_, tMax_, time_) {}
   explicit RayDifferential(const Ray& r) : Ray(r) {}
+  // The main ray with the rays one pixel over in x and y as its differentials.
+  RayDifferential(const Ray& r, const Ray& rx, const Ray& ry)
+      : Ray(r),
+        hasDifferentials(true),
+        rxOrigin(rx.o),
+        ryOrigin(ry.o),
+        rxDirection(rx.d),
+        ryDirection(ry.d) {}
   void scaleDifferentials(Float s) {
     rxOrigin = o + (rxOrigin - o) * s;
     ryOrigin = o + (ryOrigin - o) * s;
