@@ -10,6 +10,7 @@
 //   kMeanRelative.
 #include <gtest/gtest.h>
 
+#include "support/image_compare.h"
 #include "support/render_scene.h"
 
 namespace candela {
@@ -139,24 +140,11 @@ TEST(AggregateRenders, MeshesAndInstancesMatchEmbreeUpToRounding) {
   for (const char* kind : {"bvh", "kdtree", "grid"}) {
     ImageBuffer img = render(scene, kind);
     ASSERT_EQ(img.data.size(), embree.data.size());
-    int nc = embree.channelCount();
-    size_t flipped = 0, exact = 0;
-    double meanA = 0, meanB = 0;
-    for (size_t px = 0; px < embree.pixelCount(); ++px) {
-      bool ok = true;
-      for (int c = 0; c < nc; ++c) {
-        float a = img.data[px * nc + c], b = embree.data[px * nc + c];
-        ok = ok && std::abs(a - b) <= kRelative * 0.5f * (std::abs(a) + std::abs(b)) + kAbsolute;
-        exact += a == b;
-        meanA += a;
-        meanB += b;
-      }
-      flipped += !ok;
-    }
+    test::RoundingComparison c = test::compareUpToRounding(img, embree, kRelative, kAbsolute);
     std::printf("%s: %zu of %zu pixels beyond rounding, %zu of %zu values identical\n", kind,
-                flipped, embree.pixelCount(), exact, embree.data.size());
-    EXPECT_LE(double(flipped), kFlippedPixelFraction * double(embree.pixelCount())) << kind;
-    EXPECT_NEAR(meanA, meanB, kMeanRelative * meanB) << kind;
+                c.flipped, c.pixels, c.identicalValues, c.values);
+    EXPECT_LE(double(c.flipped), kFlippedPixelFraction * double(c.pixels)) << kind;
+    EXPECT_NEAR(c.sumA, c.sumB, kMeanRelative * c.sumB) << kind;
   }
 }
 

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/image_compare.h"
 #include "support/render_scene.h"
 
 namespace candela {
@@ -33,29 +34,17 @@ ImageBuffer render(const std::string& scene, LoopProducer producer) {
 void expectSameImage(const std::string& scene) {
   ImageBuffer book = render(scene, LoopProducer::Book);
   ImageBuffer osd = render(scene, LoopProducer::OpenSubdiv);
-  ASSERT_EQ(book.data.size(), osd.data.size());
-  int nc = book.channelCount();
-  size_t flipped = 0, exact = 0, lit = 0;
-  double meanBook = 0, meanOsd = 0;
-  for (size_t px = 0; px < book.pixelCount(); ++px) {
-    bool ok = true;
-    for (int c = 0; c < nc; ++c) {
-      float a = book.data[px * nc + c], b = osd.data[px * nc + c];
-      ok = ok && std::abs(a - b) <= kRelative * 0.5f * (std::abs(a) + std::abs(b)) + kAbsolute;
-      exact += a == b;
-      meanBook += a;
-      meanOsd += b;
-    }
-    lit += book.data[px * nc] > 0.01f;
-    flipped += !ok;
-  }
-  std::printf("%zu of %zu pixels beyond rounding, %zu of %zu values identical\n", flipped,
-              book.pixelCount(), exact, book.data.size());
+  test::RoundingComparison c = test::compareUpToRounding(book, osd, kRelative, kAbsolute);
+  std::printf("%zu of %zu pixels beyond rounding, %zu of %zu values identical\n", c.flipped,
+              c.pixels, c.identicalValues, c.values);
+  size_t lit = 0;
+  for (size_t px = 0; px < book.pixelCount(); ++px)
+    lit += book.data[px * book.channelCount()] > 0.01f;
   // The lit surface covers a fair part of the frame (12% for the mesh, 11.5% for the killeroo),
   // so the comparison means something.
   EXPECT_GT(double(lit), 0.08 * double(book.pixelCount()));
-  EXPECT_LE(double(flipped), kFlippedPixelFraction * double(book.pixelCount()));
-  EXPECT_NEAR(meanBook, meanOsd, kMeanRelative * meanOsd);
+  EXPECT_LE(double(c.flipped), kFlippedPixelFraction * double(c.pixels));
+  EXPECT_NEAR(c.sumA, c.sumB, kMeanRelative * c.sumB);
 }
 
 // An octahedron with one face missing: a boundary, vertices of valence 4 inside (where Warren's
