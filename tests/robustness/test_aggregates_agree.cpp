@@ -36,6 +36,8 @@
 #include "core/sampling.h"
 #include "scene/shape_factory.h"
 #include "shapes/triangle_mesh.h"
+#include "support/random_geometry.h"
+#include "support/test_device.h"
 
 namespace candela {
 namespace {
@@ -50,17 +52,7 @@ constexpr Float kMinCosine = 0.05f;
 // ... and, on a triangle, at least this far from its edges (in barycentric coordinates).
 constexpr double kEdgeBarycentric = 1e-5;
 
-const EmbreeDevice& device() {
-  static EmbreeDevice d;
-  return d;
-}
-
 Float uniform(RNG& rng, Float lo, Float hi) { return lerp(rng.uniformFloat(), lo, hi); }
-Vector3f randomDirection(RNG& rng) {
-  Float u0 = rng.uniformFloat();
-  return sampleUniformSphere(Point2f(u0, rng.uniformFloat()));
-}
-
 // A random nested transform: translation, rotation, non-uniform scale (mirrored 1 time in 4),
 // another rotation, as several Transform statements would compose.
 Transform nestedTransform(RNG& rng, Float extent) {
@@ -69,7 +61,7 @@ Transform nestedTransform(RNG& rng, Float extent) {
   Float sx = uniform(rng, 0.5f, 1.5f), sy = uniform(rng, 0.5f, 1.5f), sz = uniform(rng, 0.5f, 1.5f);
   if (rng.uniformUInt32(4) == 0) sx = -sx;
   Float a0 = uniform(rng, 0, 360), a1 = uniform(rng, 0, 360);
-  Vector3f ax0 = randomDirection(rng), ax1 = randomDirection(rng);
+  Vector3f ax0 = test::randomDirection(rng), ax1 = test::randomDirection(rng);
   return translate(t) * rotate(a0, ax0) * scale(sx, sy, sz) * rotate(a1, ax1);
 }
 
@@ -186,7 +178,7 @@ AgreeScene buildScene() {
   for (int i = 0; i < 4; ++i) {
     Transform t0 = nestedTransform(rng, 8);
     Transform t1 = translate(Vector3f(uniform(rng, -2, 2), uniform(rng, -2, 2), 1)) * t0 *
-                   rotate(uniform(rng, 10, 120), randomDirection(rng));
+                   rotate(uniform(rng, 10, 120), test::randomDirection(rng));
     inst.push_back(Instance{i % 2 ? ball.get() : cluster.get(), AnimatedTransform(t0, 0, t1, 1)});
   }
   s.geometry.prototypes.push_back(std::move(cluster));
@@ -362,29 +354,29 @@ Ray makeRay(uint64_t i, const Bounds3f& b, const Aggregate& probe) {
   };
   switch (Group(i % kGroups)) {
     case kOutside: {
-      Point3f o = c + randomDirection(rng) * (radius * uniform(rng, 1.05f, 4));
+      Point3f o = c + test::randomDirection(rng) * (radius * uniform(rng, 1.05f, 4));
       return withTime(Ray(o, (inside() - o) * uniform(rng, 0.1f, 3)));
     }
     case kInside:
-      return withTime(Ray(inside(), randomDirection(rng)));
+      return withTime(Ray(inside(), test::randomDirection(rng)));
     case kOnSurface:
     case kGrazing: {
       for (int attempt = 0; attempt < 16; ++attempt) {
-        Ray r = withTime(Ray(inside(), randomDirection(rng)));
+        Ray r = withTime(Ray(inside(), test::randomDirection(rng)));
         SurfaceInteraction si;
         if (!probe.intersect(r, &si)) continue;
         Vector3f n = normalize(Vector3f(si.n));
-        if (i % kGroups == kOnSurface) return withTime(si.spawnRay(randomDirection(rng)));
+        if (i % kGroups == kOnSurface) return withTime(si.spawnRay(test::randomDirection(rng)));
         // Nearly tangent at the hit, passing over it from a little way back.
         // Half within 0.002 of tangent, half at cosines 0.05 to 0.2 (compared with Embree).
-        Vector3f t = normalize(cross(n, randomDirection(rng)));
+        Vector3f t = normalize(cross(n, test::randomDirection(rng)));
         Float lift = (i / kGroups) % 2
                          ? uniform(rng, -2e-3f, 2e-3f)
                          : uniform(rng, 0.06f, 0.2f) * (rng.uniformUInt32(2) ? 1 : -1);
         Vector3f d = normalize(t + n * lift);
         return withTime(Ray(si.p - d * uniform(rng, 0.05f, 2), d));
       }
-      return withTime(Ray(inside(), randomDirection(rng)));
+      return withTime(Ray(inside(), test::randomDirection(rng)));
     }
     case kAxisParallel: {
       Point3f o = inside();
@@ -403,7 +395,7 @@ Ray makeRay(uint64_t i, const Bounds3f& b, const Aggregate& probe) {
       Point3f o = inside();
       int face = int(rng.uniformUInt32(3));
       o[face] = rng.uniformUInt32(2) ? b.pMin[face] : b.pMax[face];
-      Vector3f d = randomDirection(rng);
+      Vector3f d = test::randomDirection(rng);
       int zero = int(rng.uniformUInt32(3));
       d[zero] = rng.uniformUInt32(2) ? 0.f : -0.f;
       if (rng.uniformUInt32(3) == 0) d[(zero + 1) % 3] = 0;
@@ -488,10 +480,10 @@ void runAgreement(uint64_t nRays) {
   ASSERT_GE(scene.quadricKinds.size(), 1u);
   const SceneGeometry& g = scene.geometry;
   FileLoc loc{"test", 1, 1};
-  auto embree = createAggregate("embree", {}, g, device(), loc);
+  auto embree = createAggregate("embree", {}, g, test::embreeDevice(), loc);
   std::vector<std::pair<std::string, std::unique_ptr<Aggregate>>> aggs;
   for (const char* kind : {"bvh", "kdtree", "grid"})
-    aggs.emplace_back(kind, createAggregate(kind, {}, g, device(), loc));
+    aggs.emplace_back(kind, createAggregate(kind, {}, g, test::embreeDevice(), loc));
   BruteForce brute(g);
   Bounds3f bounds = embree->worldBound();
   for (const auto& [name, agg] : aggs) {

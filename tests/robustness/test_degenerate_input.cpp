@@ -7,14 +7,10 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "shape_zoo.h"
+#include "support/test_device.h"
 
 namespace candela {
 namespace {
-
-const EmbreeDevice& device() {
-  static EmbreeDevice d;
-  return d;
-}
 
 TEST(DegenerateTriangles, NeverHitAndNeverBreakTheBuild) {
   const Float nan = std::numeric_limits<Float>::quiet_NaN();
@@ -31,7 +27,7 @@ TEST(DegenerateTriangles, NeverHitAndNeverBreakTheBuild) {
   test::ShapeScene scene;
   scene.add(std::make_unique<TriangleMesh>(Transform(), false, indices, p));
   ASSERT_EQ(scene.shapes.size(), 6u);
-  EmbreeAggregate agg(device(), scene.primitives);  // must not throw
+  EmbreeAggregate agg(test::embreeDevice(), scene.primitives);  // must not throw
   RNG rng(71);
   int properHits = 0;
   for (int i = 0; i < 100000; ++i) {
@@ -76,7 +72,7 @@ TEST(BadRays, MissEveryShapeKind) {
                            Ray(Point3f(nan, nan, nan), Vector3f(nan, nan, nan))};
   for (const test::Placement& place : test::placements()) {
     for (auto& scene : test::shapeZoo(place.t)) {
-      EmbreeAggregate agg(device(), scene->primitives);
+      EmbreeAggregate agg(test::embreeDevice(), scene->primitives);
       for (const Ray& r : rays) {
         SurfaceInteraction si;
         EXPECT_FALSE(agg.intersect(r, &si)) << scene->name << " " << place.name;

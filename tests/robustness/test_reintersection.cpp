@@ -8,14 +8,10 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "shape_zoo.h"
+#include "support/test_device.h"
 
 namespace candela {
 namespace {
-
-const EmbreeDevice& device() {
-  static EmbreeDevice d;
-  return d;
-}
 
 Point2f next2D(RNG& rng) {
   Float u0 = rng.uniformFloat();
@@ -41,7 +37,7 @@ TEST(Reintersection, SpawnedRaysNeverReHitTheSurfaceTheyLeave) {
   for (const test::Placement& place : test::placements()) {
     for (auto& scene : test::shapeZoo(place.t)) {
       SCOPED_TRACE(scene->name + " " + place.name);
-      EmbreeAggregate agg(device(), scene->primitives);
+      EmbreeAggregate agg(test::embreeDevice(), scene->primitives);
       RNG rng(51);
       Failures reHits, inconsistent;
       int hits = 0, spawned = 0, legitimate = 0;
@@ -105,7 +101,7 @@ TEST(Reintersection, ShadowSegmentsBetweenSurfacePointsAreClear) {
     for (auto& scene : test::shapeZoo(place.t)) {
       if (!scene->convex || scene->planar) continue;
       SCOPED_TRACE(scene->name + " " + place.name);
-      EmbreeAggregate agg(device(), scene->primitives);
+      EmbreeAggregate agg(test::embreeDevice(), scene->primitives);
       RNG rng(52);
       Failures blocked;
       // The distance from the shapes' axis (a bound on the radius of curvature of these

@@ -11,14 +11,10 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "shape_zoo.h"
+#include "support/test_device.h"
 
 namespace candela {
 namespace {
-
-const EmbreeDevice& device() {
-  static EmbreeDevice d;
-  return d;
-}
 
 // The unit icosahedron subdivided `levels` times, vertices pushed onto the unit sphere: 20 4^levels
 // triangles, each edge's midpoint shared by its two triangles, consistently wound outward.
@@ -73,7 +69,7 @@ Point3f insidePoint(const Transform& t, RNG& rng) {
 long escapes(const test::Placement& place, long nRays, uint64_t seed) {
   SphereMesh sphere(place.t);
   const TriangleMesh& mesh = sphere.mesh();
-  EmbreeAggregate agg(device(), sphere.scene.primitives);
+  EmbreeAggregate agg(test::embreeDevice(), sphere.scene.primitives);
   RNG rng(seed);
   long escaped = 0;
   for (long i = 0; i < nRays; ++i) {
@@ -138,7 +134,7 @@ TEST(Watertight, EmbreeRaysThroughVerticesRarelyEscape) {
   for (const test::Placement& place : test::placements()) {
     SphereMesh sphere(place.t);
     const TriangleMesh& mesh = sphere.mesh();
-    EmbreeAggregate agg(device(), sphere.scene.primitives);
+    EmbreeAggregate agg(test::embreeDevice(), sphere.scene.primitives);
     RNG rng(64);
     const int n = 25000;
     int escaped = 0;

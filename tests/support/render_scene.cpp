@@ -3,20 +3,17 @@
 #include "accel/embree/embree_device.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
+#include "support/test_device.h"
 
 namespace candela::test {
 
 namespace {
-const EmbreeDevice& testDevice() {
-  static EmbreeDevice device;  // one per test process, as in the application
-  return device;
-}
 
 RenderedScene run(const std::string& text, const BuildOptions& build, const RenderOptions* render) {
   RenderedScene out;
   SceneBuilder builder(
       [&](SceneDescription&& desc) {
-        out.jobs.push_back(buildRenderJob(desc, build, testDevice()));
+        out.jobs.push_back(buildRenderJob(desc, build, embreeDevice()));
         if (render) {
           RenderJob& job = out.jobs.back();
           SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);

@@ -10,24 +10,11 @@
 #include "core/sampling.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
+#include "support/random_geometry.h"
+#include "support/test_device.h"
 
 namespace candela {
 namespace {
-
-// One device for the whole test program, as the renderer has.
-const EmbreeDevice& device() {
-  static EmbreeDevice d;
-  return d;
-}
-
-Vector3f randomDirection(RNG& rng) {
-  Float u0 = rng.uniformFloat();
-  return sampleUniformSphere(Point2f(u0, rng.uniformFloat()));
-}
-Point3f randomPoint(RNG& rng, Float lo, Float hi) {
-  Float x = lerp(rng.uniformFloat(), lo, hi), y = lerp(rng.uniformFloat(), lo, hi);
-  return Point3f(x, y, lerp(rng.uniformFloat(), lo, hi));
-}
 
 // Shapes and meshes with their primitives; the primitive vector does not move once built.
 struct TestScene {
@@ -95,9 +82,9 @@ std::unique_ptr<TriangleMesh> soup(int n, RNG& rng, const Transform& t) {
   std::vector<Point3f> p;
   std::vector<int> idx;
   for (int i = 0; i < n; ++i) {
-    Point3f c = randomPoint(rng, -4, 4);
+    Point3f c = test::randomPoint(rng, -4, 4);
     for (int k = 0; k < 3; ++k) {
-      p.push_back(c + randomDirection(rng) * 0.8f);
+      p.push_back(c + test::randomDirection(rng) * 0.8f);
       idx.push_back(3 * i + k);
     }
   }
@@ -120,7 +107,7 @@ void buildMixedScene(TestScene* s) {
                                        -0.7f, 0.7f, 360));  // mirrored
   s->addTriangles(tris, 150, 300);  // the second run of the soup: a second Embree geometry
   for (int i = 0; i < 20; ++i) {
-    Point3f c = randomPoint(rng, -5, 5);
+    Point3f c = test::randomPoint(rng, -5, 5);
     s->add(std::make_unique<SphereShape>(translate(Vector3f(c)), false, 0.3f, -0.3f, 0.3f, 360));
   }
 }
@@ -128,7 +115,7 @@ void buildMixedScene(TestScene* s) {
 TEST(EmbreeAggregate, Stats) {
   TestScene s;
   buildMixedScene(&s);
-  EmbreeAggregate agg(device(), s.primitives);
+  EmbreeAggregate agg(test::embreeDevice(), s.primitives);
   AggregateStats st = agg.stats();
   EXPECT_EQ(st.name, "embree");
   EXPECT_EQ(st.counts["embree triangle geometries"], 3);
@@ -143,14 +130,14 @@ TEST(EmbreeAggregate, Stats) {
 TEST(EmbreeAggregate, AgreesWithBruteForce) {
   TestScene s;
   buildMixedScene(&s);
-  EmbreeAggregate agg(device(), s.primitives);
+  EmbreeAggregate agg(test::embreeDevice(), s.primitives);
   RNG rng(22);
   const int n = 30000;
   int hits = 0, hitMismatch = 0, primMismatch = 0, tMismatch = 0, occMismatch = 0;
   double maxRelT = 0;
   for (int i = 0; i < n; ++i) {
-    Point3f o = randomPoint(rng, -8, 8);
-    Point3f target = randomPoint(rng, -5, 5);
+    Point3f o = test::randomPoint(rng, -8, 8);
+    Point3f target = test::randomPoint(rng, -5, 5);
     Vector3f d = (target - o) * lerp(rng.uniformFloat(), 0.1f, 3.f);
     Ray ray(o, d);
     Float tRef = 0;
@@ -196,7 +183,7 @@ TEST(EmbreeAggregate, HitsPointIntoThePrimitiveVector) {
   const TriangleMesh* m = s.addMesh(terrain(2, Transform()));
   s.add(std::make_unique<SphereShape>(Transform(), false, 1, -1, 1, 360));
   s.addTriangles(m, 0, m->triangleCount());
-  EmbreeAggregate agg(device(), s.primitives);
+  EmbreeAggregate agg(test::embreeDevice(), s.primitives);
   SurfaceInteraction isect;
   Ray down(Point3f(0.1f, 0.2f, 5), Vector3f(0, 0, -1));
   ASSERT_TRUE(agg.intersect(down, &isect));
@@ -214,7 +201,7 @@ TEST(EmbreeAggregate, HitsPointIntoThePrimitiveVector) {
 TEST(EmbreeAggregate, BadRaysMiss) {
   TestScene s;
   buildMixedScene(&s);
-  EmbreeAggregate agg(device(), s.primitives);
+  EmbreeAggregate agg(test::embreeDevice(), s.primitives);
   Float nan = std::numeric_limits<Float>::quiet_NaN(), inf = kInfinity;
   std::vector<Ray> rays = {
       Ray(Point3f(nan, 0, 0), Vector3f(0, 0, 1)),     Ray(Point3f(0, 0, 10), Vector3f(0, nan, -1)),
@@ -226,14 +213,14 @@ TEST(EmbreeAggregate, BadRaysMiss) {
     EXPECT_FALSE(agg.intersect(r, &isect));
     EXPECT_FALSE(agg.intersectP(r));
   }
-  EmbreeAggregate empty(device(), std::vector<Primitive>());
+  EmbreeAggregate empty(test::embreeDevice(), std::vector<Primitive>());
   SurfaceInteraction isect;
   EXPECT_FALSE(empty.intersect(Ray(Point3f(), Vector3f(0, 0, 1)), &isect));
   EXPECT_TRUE(empty.worldBound().empty());
 }
 
 TEST(EmbreeAggregate, DeviceErrorsBecomeExceptions) {
-  EXPECT_EQ(device().config(), "isa=avx2");
+  EXPECT_EQ(test::embreeDevice().config(), "isa=avx2");
   EXPECT_THROW(EmbreeDevice("isa=avx2,threads=abc"), EmbreeError);
 }
 
@@ -241,12 +228,12 @@ TEST(EmbreeAggregate, DeviceErrorsBecomeExceptions) {
 TEST(EmbreeAggregate, FlushToZeroKeepsResults) {
   TestScene s;
   buildMixedScene(&s);
-  EmbreeAggregate agg(device(), s.primitives);
+  EmbreeAggregate agg(test::embreeDevice(), s.primitives);
   auto trace = [&](std::vector<Float>* ts, std::vector<const Primitive*>* prims) {
     RNG rng(51);
     for (int i = 0; i < 3000; ++i) {
-      Point3f o = randomPoint(rng, -8, 8);
-      Ray ray(o, randomPoint(rng, -5, 5) - o);
+      Point3f o = test::randomPoint(rng, -8, 8);
+      Ray ray(o, test::randomPoint(rng, -5, 5) - o);
       SurfaceInteraction isect;
       bool hit = agg.intersect(ray, &isect);
       ts->push_back(hit ? ray.tMax : -1);
@@ -293,12 +280,12 @@ TEST(EmbreeAggregate, SpawnedRaysDoNotReHit) {
     const TriangleMesh* mesh = s.addMesh(soup(40, rng, pl.t));
     s.add(std::make_unique<SphereShape>(pl.t, false, 1, -1, 1, 360));
     s.addTriangles(mesh, 0, mesh->triangleCount());
-    EmbreeAggregate agg(device(), s.primitives);
+    EmbreeAggregate agg(test::embreeDevice(), s.primitives);
     int hits = 0, spawned = 0, reHits = 0, shortExits = 0, bruteReHits = 0;
     for (int i = 0; i < 4000; ++i) {
       // Object space: from a sphere of radius 8 toward the geometry.
-      Point3f oObj = Point3f(randomDirection(rng) * 8);
-      Point3f target = randomPoint(rng, -1.5f, 1.5f);
+      Point3f oObj = Point3f(test::randomDirection(rng) * 8);
+      Point3f target = test::randomPoint(rng, -1.5f, 1.5f);
       Ray ray = pl.t(Ray(oObj, target - oObj));
       SurfaceInteraction isect;
       if (!agg.intersect(ray, &isect)) continue;
@@ -307,7 +294,7 @@ TEST(EmbreeAggregate, SpawnedRaysDoNotReHit) {
       Normal3f nf = faceForward(isect.n, isect.wo);
       for (int k = 0; k < 8; ++k) {
         // The side the ray came from; for a flat triangle either side.
-        Vector3f w = randomDirection(rng);
+        Vector3f w = test::randomDirection(rng);
         if (isSphere && dot(w, nf) < 0) w = -w;
         Ray out = isect.spawnRay(w);
         SurfaceInteraction next;
@@ -355,19 +342,19 @@ TEST(EmbreeAggregate, LargeAndAxisAlignedTrianglesAreNotReHit) {
         std::vector<Point3f>{
             {-1000, -1000, 0}, {1000, -1000, 0}, {1000, 1000, 0}, {-1000, 1000, 0}}));
     s.addTriangles(m, 0, 2);
-    EmbreeAggregate agg(device(), s.primitives);
+    EmbreeAggregate agg(test::embreeDevice(), s.primitives);
     RNG rng(41);
     int hits = 0, reHits = 0, bruteReHits = 0, occluded = 0;
     for (int i = 0; i < 5000; ++i) {
       // Near the middle of the quad, from either side.
       Point3f target(lerp(rng.uniformFloat(), -3.f, 3.f), lerp(rng.uniformFloat(), -3.f, 3.f), 0);
-      Point3f o = target + randomDirection(rng) * lerp(rng.uniformFloat(), 0.01f, 100.f);
+      Point3f o = target + test::randomDirection(rng) * lerp(rng.uniformFloat(), 0.01f, 100.f);
       Ray ray = t(Ray(o, target - o));
       SurfaceInteraction isect;
       if (!agg.intersect(ray, &isect)) continue;
       ++hits;
       for (int k = 0; k < 4; ++k) {
-        Vector3f w = randomDirection(rng);  // both sides: a flat triangle is never hit again
+        Vector3f w = test::randomDirection(rng);  // both sides: a flat triangle is never hit again
         Ray out = isect.spawnRay(w);
         Float tHit;
         if (isect.primitive->shape->intersect(out, &tHit, nullptr)) ++bruteReHits;

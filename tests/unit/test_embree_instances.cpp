@@ -11,23 +11,11 @@
 #include "core/sampling.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
+#include "support/random_geometry.h"
+#include "support/test_device.h"
 
 namespace candela {
 namespace {
-
-const EmbreeDevice& device() {
-  static EmbreeDevice d;
-  return d;
-}
-
-Vector3f randomDirection(RNG& rng) {
-  Float u0 = rng.uniformFloat();
-  return sampleUniformSphere(Point2f(u0, rng.uniformFloat()));
-}
-Point3f randomPoint(RNG& rng, Float lo, Float hi) {
-  Float x = lerp(rng.uniformFloat(), lo, hi), y = lerp(rng.uniformFloat(), lo, hi);
-  return Point3f(x, y, lerp(rng.uniformFloat(), lo, hi));
-}
 
 // A shape of a prototype, in the prototype's space, that can also be made under any transform.
 struct ShapeSpec {
@@ -58,9 +46,9 @@ void build(const std::vector<ShapeSpec>& specs, const Transform& t, Built* out,
     std::vector<Point3f> p;
     std::vector<int> idx;
     for (int i = 0; i < 30; ++i) {
-      Point3f c = randomPoint(rng, -1.5f, 1.5f);
+      Point3f c = test::randomPoint(rng, -1.5f, 1.5f);
       for (int k = 0; k < 3; ++k) {
-        p.push_back(c + randomDirection(rng) * 0.6f);
+        p.push_back(c + test::randomDirection(rng) * 0.6f);
         idx.push_back(3 * i + k);
       }
     }
@@ -133,7 +121,7 @@ struct TwoScenes {
 
 TEST(EmbreeInstances, StatsCountInstancesAndSharedPrototypes) {
   TwoScenes s;
-  EmbreeAggregate agg(device(), s.geometry);
+  EmbreeAggregate agg(test::embreeDevice(), s.geometry);
   AggregateStats st = agg.stats();
   EXPECT_EQ(st.counts["instances"], 8);
   EXPECT_EQ(st.counts["prototypes"], 2);
@@ -142,7 +130,7 @@ TEST(EmbreeInstances, StatsCountInstancesAndSharedPrototypes) {
   EXPECT_EQ(st.counts["triangles"], 30);            // the ground only
   EXPECT_EQ(st.counts["prototype triangles"], 60);  // one soup per prototype, once
   EXPECT_EQ(st.counts["prototype user primitives"], 3);
-  EmbreeAggregate flat(device(), s.flat);
+  EmbreeAggregate flat(test::embreeDevice(), s.flat);
   // Instances are bounded by their prototype's box transformed: at least the flat bound.
   Bounds3f a = agg.worldBound(), b = flat.worldBound();
   EXPECT_TRUE(a.inside(b.pMin) && a.inside(b.pMax));
@@ -150,15 +138,15 @@ TEST(EmbreeInstances, StatsCountInstancesAndSharedPrototypes) {
 
 TEST(EmbreeInstances, AgreeWithFlattenedShapes) {
   TwoScenes s;
-  EmbreeAggregate agg(device(), s.geometry);
-  EmbreeAggregate flat(device(), s.flat);
+  EmbreeAggregate agg(test::embreeDevice(), s.geometry);
+  EmbreeAggregate flat(test::embreeDevice(), s.flat);
   RNG rng(3);
   const int n = 40000;
   int hits = 0, hitMismatch = 0, primMismatch = 0, tMismatch = 0, occMismatch = 0;
   double maxRelT = 0, maxP = 0, minNormalDot = 1;
   for (int i = 0; i < n; ++i) {
-    Point3f o = randomPoint(rng, -10, 10);
-    Vector3f d = (randomPoint(rng, -6, 6) - o) * lerp(rng.uniformFloat(), 0.1f, 3.f);
+    Point3f o = test::randomPoint(rng, -10, 10);
+    Vector3f d = (test::randomPoint(rng, -6, 6) - o) * lerp(rng.uniformFloat(), 0.1f, 3.f);
     Ray r1(o, d), r2(o, d);
     SurfaceInteraction a, b;
     bool h1 = agg.intersect(r1, &a), h2 = flat.intersect(r2, &b);
@@ -208,7 +196,7 @@ TEST(EmbreeInstances, AnimatedInstanceMatchesStaticInstanceAtEachTime) {
       translate(Vector3f(2, 1, 0.5f)) * rotate(80, Vector3f(1, 1, 0)) * scale(1.2f, 1, 1);
   SceneGeometry moving;
   moving.instances.push_back(Instance{&proto, AnimatedTransform(t0, 0, t1, 2)});
-  EmbreeAggregate agg(device(), moving);
+  EmbreeAggregate agg(test::embreeDevice(), moving);
   AggregateStats st = agg.stats();
   EXPECT_EQ(st.counts["motion instances"], 1);
   EXPECT_EQ(st.counts["embree motion user geometries"], 1);
@@ -221,10 +209,10 @@ TEST(EmbreeInstances, AnimatedInstanceMatchesStaticInstanceAtEachTime) {
     SceneGeometry still;
     still.instances.push_back(
         Instance{&proto, AnimatedTransform(moving.instances[0].instanceToWorld.interpolate(time))});
-    EmbreeAggregate ref(device(), still);
+    EmbreeAggregate ref(test::embreeDevice(), still);
     for (int i = 0; i < 5000; ++i) {
-      Point3f o = randomPoint(rng, -8, 8);
-      Vector3f d = randomPoint(rng, -3, 3) - o;
+      Point3f o = test::randomPoint(rng, -8, 8);
+      Vector3f d = test::randomPoint(rng, -3, 3) - o;
       Ray r1(o, d, kInfinity, time), r2(o, d, kInfinity, time);
       SurfaceInteraction a, b;
       bool h1 = agg.intersect(r1, &a), h2 = ref.intersect(r2, &b);
@@ -251,7 +239,7 @@ TEST(EmbreeInstances, AnimatedInstanceMatchesStaticInstanceAtEachTime) {
   EXPECT_EQ(occMismatch, 0);
   // The aggregate's bound holds the prototype's bound all along the sweep.
   Bounds3f b = agg.worldBound();
-  Bounds3f protoBound = EmbreeAggregate(device(), proto.primitives).worldBound();
+  Bounds3f protoBound = EmbreeAggregate(test::embreeDevice(), proto.primitives).worldBound();
   for (int k = 0; k <= 200; ++k) {
     Bounds3f at = moving.instances[0].instanceToWorld.interpolate(k / 100.f)(protoBound);
     for (int c = 0; c < 8; ++c) EXPECT_TRUE(b.inside(at.corner(c))) << k;
@@ -265,7 +253,7 @@ TEST(EmbreeInstances, EmptyAndUnusedPrototypesBuildNothing) {
   Built shapes;
   build(prototypeB(), Transform(), &shapes, &g.prototypes[1]->primitives);
   g.instances.push_back(Instance{g.prototypes[0].get(), AnimatedTransform()});
-  EmbreeAggregate agg(device(), g);
+  EmbreeAggregate agg(test::embreeDevice(), g);
   AggregateStats st = agg.stats();
   EXPECT_EQ(st.counts["prototypes"], 0);
   SurfaceInteraction isect;
@@ -302,14 +290,14 @@ TEST(EmbreeInstances, SpawnedRaysDoNotReHit) {
     AnimatedTransform xf =
         c.animated ? AnimatedTransform(c.t, 0, c.t * rotateZ(40), 1) : AnimatedTransform(c.t);
     g.instances.push_back(Instance{&proto, xf});
-    EmbreeAggregate agg(device(), g);
+    EmbreeAggregate agg(test::embreeDevice(), g);
     RNG rng(12);
     int hits = 0, spawned = 0, reHits = 0;
     for (int i = 0; i < 3000; ++i) {
       Float time = rng.uniformFloat();
       Transform at = xf.interpolate(time);
-      Point3f oObj = Point3f(randomDirection(rng) * 6);
-      Ray objRay(oObj, randomPoint(rng, -1.5f, 1.5f) - oObj);
+      Point3f oObj = Point3f(test::randomDirection(rng) * 6);
+      Ray objRay(oObj, test::randomPoint(rng, -1.5f, 1.5f) - oObj);
       Ray ray(at(objRay.o), at(objRay.d), kInfinity, time);
       SurfaceInteraction isect;
       if (!agg.intersect(ray, &isect)) continue;
@@ -317,7 +305,7 @@ TEST(EmbreeInstances, SpawnedRaysDoNotReHit) {
       bool isSphere = isect.primitive == &proto.primitives[0];
       Normal3f nf = faceForward(isect.n, isect.wo);
       for (int k = 0; k < 6; ++k) {
-        Vector3f w = randomDirection(rng);
+        Vector3f w = test::randomDirection(rng);
         if (isSphere && dot(w, nf) < 0) w = -w;
         Ray out = isect.spawnRay(w);
         SurfaceInteraction next;

@@ -14,14 +14,10 @@
 #include "core/rng.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
+#include "support/test_device.h"
 
 namespace candela {
 namespace {
-
-const EmbreeDevice& device() {
-  static EmbreeDevice d;
-  return d;
-}
 
 ParamItem intParam(const std::string& name, int v) {
   ParamItem p;
@@ -85,7 +81,7 @@ struct Scene {
 
 std::unique_ptr<Aggregate> make(const std::string& kind, const SceneGeometry& g,
                                 const ParamSet& params = {}) {
-  return createAggregate(kind, params, g, device(), FileLoc{"test.pbrt", 3, 1});
+  return createAggregate(kind, params, g, test::embreeDevice(), FileLoc{"test.pbrt", 3, 1});
 }
 
 // --- Factory -------------------------------------------------------------------------------

@@ -5,14 +5,10 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "shapes/sphere.h"
+#include "support/random_geometry.h"
 
 namespace candela {
 namespace {
-
-Vector3f randomDirection(RNG& rng) {
-  Float u0 = rng.uniformFloat();
-  return sampleUniformSphere(Point2f(u0, rng.uniformFloat()));
-}
 
 void expectNear(const Vector3f& a, const Vector3f& b, Float tol) {
   EXPECT_NEAR(a.x, b.x, tol) << a << " vs " << b;
@@ -34,7 +30,7 @@ TEST(SphereShape, HitThroughCentre) {
   SphereShape moved(o2w, false, 2.5f, -2.5f, 2.5f, 360);
   RNG rng(1);
   for (int i = 0; i < 100; ++i) {
-    Vector3f d = randomDirection(rng);
+    Vector3f d = test::randomDirection(rng);
     Point3f c(3, -2, 7);
     Ray r(c - d * 11, d);
     ASSERT_TRUE(moved.intersect(r, &t, nullptr));
@@ -55,7 +51,7 @@ TEST(SphereShape, HitFromInside) {
   SphereShape s(Transform(), false, 2, -2, 2, 360);
   RNG rng(2);
   for (int i = 0; i < 100; ++i) {
-    Vector3f d = randomDirection(rng);
+    Vector3f d = test::randomDirection(rng);
     Float t;
     SurfaceInteraction isect;
     ASSERT_TRUE(s.intersect(Ray(Point3f(0, 0, 0), d * 3), &t, &isect));
@@ -93,8 +89,8 @@ TEST(SphereShape, DifferentialGeometry) {
   RNG rng(3);
   int hits = 0;
   for (int i = 0; i < 500; ++i) {
-    Point3f o = Point3f(randomDirection(rng) * 6);
-    Vector3f d = Vector3f(randomDirection(rng) * 1.5f) - Vector3f(o);
+    Point3f o = Point3f(test::randomDirection(rng) * 6);
+    Vector3f d = Vector3f(test::randomDirection(rng) * 1.5f) - Vector3f(o);
     Float t;
     SurfaceInteraction isect;
     if (!s.intersect(Ray(o, d), &t, &isect)) continue;
@@ -160,7 +156,7 @@ TEST(SphereShape, HandednessSwapFlipsNormal) {
     SphereShape s(mirror, reverse, 1, -1, 1, 360);
     RNG rng(4);
     for (int i = 0; i < 50; ++i) {
-      Vector3f d = randomDirection(rng);
+      Vector3f d = test::randomDirection(rng);
       Float t;
       SurfaceInteraction isect;
       ASSERT_TRUE(s.intersect(Ray(Point3f(d * -4), d), &t, &isect));

@@ -8,14 +8,10 @@
 #include "scene/shape_factory.h"
 #include "scene/texture_factory.h"
 #include "shapes/triangle_mesh.h"
+#include "support/test_device.h"
 
 namespace candela {
 namespace {
-
-const EmbreeDevice& device() {
-  static EmbreeDevice d;
-  return d;
-}
 
 // Zero where u < 0.5.
 class HalfTexture : public Texture<Float> {
@@ -52,7 +48,7 @@ TEST(TriangleAlpha, CutOutsInEmbreeAndInTheShape) {
   front->shadowAlpha = &half;
   scene.add(std::move(front));
   scene.add(square(0));  // opaque, behind
-  EmbreeAggregate agg(device(), scene.primitives);
+  EmbreeAggregate agg(test::embreeDevice(), scene.primitives);
   RNG rng(41);
   int cut = 0;
   for (int i = 0; i < 2000; ++i) {
@@ -86,7 +82,7 @@ TEST(TriangleAlpha, ShadowAlphaOnlyForOcclusion) {
   auto m = square(1);
   m->shadowAlpha = &half;  // seen by camera rays everywhere, casts a shadow only where u >= 0.5
   scene.add(std::move(m));
-  EmbreeAggregate agg(device(), scene.primitives);
+  EmbreeAggregate agg(test::embreeDevice(), scene.primitives);
   for (Float x : {0.25f, 0.75f}) {
     Ray ray(Point3f(x, 0.5f, 2), Vector3f(0, 0, -1));
     SurfaceInteraction si;
