@@ -15,53 +15,9 @@
 
 #include "core/rng.h"
 #include "core/vector.h"
+#include "support/tail_probabilities.h"
 
 namespace candela::stats {
-
-// ---- special functions -------------------------------------------------------------------
-
-// Regularised lower incomplete gamma P(a, x): series for x < a + 1, else 1 - Q by the continued
-// fraction (modified Lentz), each to double precision.
-inline double gammaP(double a, double x) {
-  if (x <= 0) return 0;
-  double lnPrefix = a * std::log(x) - x - std::lgamma(a);
-  if (x < a + 1) {
-    double term = 1 / a, sum = term;
-    for (int n = 1; n < 100000; ++n) {
-      term *= x / (a + n);
-      sum += term;
-      if (std::abs(term) < std::abs(sum) * 1e-16) break;
-    }
-    return std::min(1.0, sum * std::exp(lnPrefix));
-  }
-  const double tiny = 1e-300;
-  double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
-  for (int n = 1; n < 100000; ++n) {
-    double an = -n * (n - a);
-    b += 2;
-    d = an * d + b;
-    if (std::abs(d) < tiny) d = tiny;
-    c = b + an / c;
-    if (std::abs(c) < tiny) c = tiny;
-    d = 1 / d;
-    double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1) < 1e-16) break;
-  }
-  return std::max(0.0, 1 - std::exp(lnPrefix) * h);
-}
-inline double gammaQ(double a, double x) { return 1 - gammaP(a, x); }
-
-// P(X >= x) for X chi-square with dof degrees of freedom.
-inline double chiSquareSurvival(double x, int dof) { return gammaQ(0.5 * dof, 0.5 * x); }
-// P(X >= k) for X Poisson with mean lambda.
-inline double poissonUpperTail(int64_t k, double lambda) {
-  if (k <= 0) return 1;
-  if (lambda <= 0) return 0;
-  return gammaP(double(k), lambda);
-}
-// The per-case significance that keeps the family-wise error at alpha over m independent cases.
-inline double sidak(double alpha, int m) { return 1 - std::pow(1 - alpha, 1.0 / m); }
 
 // ---- adaptive cubature ---------------------------------------------------------------------
 

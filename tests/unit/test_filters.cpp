@@ -18,6 +18,7 @@
 #include "filters/triangle_filter.h"
 #include "samplers/random_sampler.h"
 #include "samplers/sampler.h"
+#include "support/tail_probabilities.h"
 
 namespace candela {
 namespace {
@@ -35,37 +36,6 @@ ParamItem floatItem(const std::string& name, std::vector<Float> v) {
 // Integral of the shifted Gaussian e^{-a x^2} - e^{-a r^2} over [-r, r].
 double gaussianIntegral1D(double r, double a) {
   return std::sqrt(M_PI / a) * std::erf(std::sqrt(a) * r) - 2 * r * std::exp(-a * r * r);
-}
-
-// Upper regularized incomplete gamma Q(a, x): the series for x < a + 1, Lentz's continued
-// fraction otherwise.
-double gammaQ(double a, double x) {
-  if (x <= 0) return 1;
-  double logPrefix = -x + a * std::log(x) - std::lgamma(a);
-  if (x < a + 1) {
-    double term = 1 / a, sum = term;
-    for (int n = 1; n < 10000; ++n) {
-      term *= x / (a + n);
-      sum += term;
-      if (std::abs(term) < std::abs(sum) * 1e-15) break;
-    }
-    return 1 - sum * std::exp(logPrefix);
-  }
-  const double tiny = 1e-300;
-  double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
-  for (int i = 1; i < 10000; ++i) {
-    double an = -i * (i - a);
-    b += 2;
-    d = an * d + b;
-    if (std::abs(d) < tiny) d = tiny;
-    c = b + an / c;
-    if (std::abs(c) < tiny) c = tiny;
-    d = 1 / d;
-    double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1) < 1e-15) break;
-  }
-  return std::exp(logPrefix) * h;
 }
 
 // Pearson's chi-square of observed against expected counts, bins with expected < 5 pooled;
@@ -86,7 +56,7 @@ double chiSquarePValue(const std::vector<double>& observed, const std::vector<do
     chi2 += (pooledObs - pooledExp) * (pooledObs - pooledExp) / pooledExp;
     ++bins;
   }
-  return gammaQ((bins - 1) / 2.0, chi2 / 2);
+  return stats::chiSquareSurvival(chi2, bins - 1);
 }
 
 struct NamedFilter {

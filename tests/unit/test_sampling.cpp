@@ -6,17 +6,10 @@
 
 #include "core/rng.h"
 #include "core/sampling.h"
+#include "support/tail_probabilities.h"
 
 namespace candela {
 namespace {
-
-// Upper-tail probability of the chi-square distribution (Wilson-Hilferty approximation, accurate
-// to a few percent in p for the degrees of freedom used here).
-double chiSquareSurvival(double x, int dof) {
-  double k = dof;
-  double z = (std::cbrt(x / k) - (1 - 2 / (9 * k))) / std::sqrt(2 / (9 * k));
-  return 0.5 * std::erfc(z / std::sqrt(2.0));
-}
 
 // Histogram of directions over (cos theta, phi) cells against the pdf integrated per cell.
 void chiSquareDirections(const std::function<Vector3f(Point2f)>& sample,
@@ -70,7 +63,8 @@ void chiSquareDirections(const std::function<Vector3f(Point2f)>& sample,
   } else {
     EXPECT_LT(pooledObs, 10) << name << ": samples where the pdf is ~0";
   }
-  EXPECT_GT(chiSquareSurvival(chi2, dof), 0.01) << name << " chi2 " << chi2 << " dof " << dof;
+  EXPECT_GT(stats::chiSquareSurvival(chi2, dof), 0.01)
+      << name << " chi2 " << chi2 << " dof " << dof;
 }
 
 TEST(Sampling, DirectionSamplersMatchTheirPdfs) {

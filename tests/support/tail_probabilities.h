@@ -1,0 +1,65 @@
+// Test helper: tail probabilities for the statistical tests (chi-square goodness of fit, Poisson
+// counts) and the Šidák per-case significance.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace candela::stats {
+
+namespace detail {
+// Both parts of the regularised incomplete gamma function: the series of P(a, x) for x < a + 1,
+// and the continued fraction of Q(a, x) (modified Lentz) otherwise, each to double precision and
+// each the accurate one in its range; the other is 1 minus it.
+struct IncompleteGamma {
+  double p, q;
+};
+inline IncompleteGamma incompleteGamma(double a, double x) {
+  if (x <= 0) return {0, 1};
+  double lnPrefix = a * std::log(x) - x - std::lgamma(a);
+  if (x < a + 1) {
+    double term = 1 / a, sum = term;
+    for (int n = 1; n < 100000; ++n) {
+      term *= x / (a + n);
+      sum += term;
+      if (std::abs(term) < std::abs(sum) * 1e-16) break;
+    }
+    double p = std::min(1.0, sum * std::exp(lnPrefix));
+    return {p, 1 - p};
+  }
+  const double tiny = 1e-300;
+  double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
+  for (int n = 1; n < 100000; ++n) {
+    double an = -n * (n - a);
+    b += 2;
+    d = an * d + b;
+    if (std::abs(d) < tiny) d = tiny;
+    c = b + an / c;
+    if (std::abs(c) < tiny) c = tiny;
+    d = 1 / d;
+    double delta = d * c;
+    h *= delta;
+    if (std::abs(delta - 1) < 1e-16) break;
+  }
+  double q = std::min(1.0, std::exp(lnPrefix) * h);
+  return {1 - q, q};
+}
+}  // namespace detail
+
+// Regularised lower and upper incomplete gamma functions P(a, x) and Q(a, x) = 1 - P(a, x).
+inline double gammaP(double a, double x) { return detail::incompleteGamma(a, x).p; }
+inline double gammaQ(double a, double x) { return detail::incompleteGamma(a, x).q; }
+
+// P(X >= x) for X chi-square with dof degrees of freedom.
+inline double chiSquareSurvival(double x, int dof) { return gammaQ(0.5 * dof, 0.5 * x); }
+// P(X >= k) for X Poisson with mean lambda.
+inline double poissonUpperTail(int64_t k, double lambda) {
+  if (k <= 0) return 1;
+  if (lambda <= 0) return 0;
+  return gammaP(double(k), lambda);
+}
+// The per-case significance that keeps the family-wise error at alpha over m independent cases.
+inline double sidak(double alpha, int m) { return 1 - std::pow(1 - alpha, 1.0 / m); }
+
+}  // namespace candela::stats
