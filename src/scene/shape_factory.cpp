@@ -10,6 +10,7 @@
 #include "shapes/heightfield.h"
 #include "shapes/hyperboloid.h"
 #include "shapes/loop_subdiv_shape.h"
+#include "shapes/nurbs.h"
 #include "shapes/paraboloid.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
@@ -66,6 +67,9 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
   } else if (desc.name == "loopsubdiv") {
     out.shapes = createLoopSubdivShapes(objectToWorld, desc.reverseOrientation, desc.params,
                                         &out.mesh, desc.loc, subdiv);
+  } else if (desc.name == "nurbs") {
+    out.shapes =
+        createNurbsShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh, desc.loc);
   } else if (desc.name == "plymesh") {
     std::string dir = std::filesystem::path(desc.loc.file).parent_path().string();
     out.shapes = createPlyMeshShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh,
@@ -73,7 +77,7 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
   } else {
     throwUnknownPlugin(desc.loc, "shape", desc.name,
                        {"sphere", "cylinder", "disk", "cone", "paraboloid", "hyperboloid",
-                        "heightfield", "trianglemesh", "plymesh", "loopsubdiv"});
+                        "heightfield", "trianglemesh", "plymesh", "loopsubdiv", "nurbs"});
   }
   return out;
 }
