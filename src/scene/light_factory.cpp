@@ -79,7 +79,8 @@ std::unique_ptr<Light> createLight(const LightDesc& desc,
   if (desc.name == "goniometric")
     return std::make_unique<GoniometricLight>(toWorld, p.getOneSpectrum("I", Spectrum(1)) * scale,
                                               mipmapOf(readMap(desc, loadImage)));
-  if (desc.name == "infinite") {
+  // pbrt-v2 registers its environment light under both names.
+  if (desc.name == "infinite" || desc.name == "exinfinite") {
     int nSamples = readSampleCount(p, desc.loc);
     LatLongMap map;
     if (std::optional<ImageBuffer> image = readMap(desc, loadImage))
@@ -87,8 +88,9 @@ std::unique_ptr<Light> createLight(const LightDesc& desc,
     return std::make_unique<InfiniteAreaLight>(toWorld, p.getOneSpectrum("L", Spectrum(1)) * scale,
                                                nSamples, std::move(map));
   }
-  throwUnknownPlugin(desc.loc, "light", desc.name,
-                     {"distant", "goniometric", "infinite", "point", "projection", "spot"});
+  throwUnknownPlugin(
+      desc.loc, "light", desc.name,
+      {"distant", "exinfinite", "goniometric", "infinite", "point", "projection", "spot"});
 }
 
 std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* shape) {

@@ -48,6 +48,16 @@ TEST(InfiniteLightScene, DiffusePlaneUnderUniformSkyRendersRhoL) {
   EXPECT_NEAR(sum / n, 1.0, 0.01);  // ρ L = 0.5 × 2
 }
 
+TEST(InfiniteLightScene, ExinfiniteIsPbrtV2sOtherNameForIt) {
+  auto render = [](const char* name) {
+    std::string world =
+        std::string("LightSource \"").append(name).append("\" \"rgb L\" [2 2 2]\n") + kPlane;
+    return test::renderSceneText(frame("\"path\"", 2, world)).film().image();
+  };
+  ImageBuffer a = render("infinite"), b = render("exinfinite");
+  EXPECT_EQ(a.data, b.data);
+}
+
 Spectrum intensityAtUnitDistance(const Light& light) {
   Vector3f wi;
   Float pdf;
