@@ -1,24 +1,24 @@
 // "directlighting": emitted plus directly reflected light, with Whitted-style recursion through
-// specular reflection and transmission up to maxdepth (lrt draft §16.1; pbrt 2e §15.1).
+// specular reflection and transmission up to maxdepth (lrt draft §16.1; pbrt 2e §15.1). The
+// direct term uses MIS of a light and a BSDF sample, for all lights or one chosen at random.
 #pragma once
 
-#include "integrators/integrator.h"
+#include "integrators/specular_recursion.h"
 
 namespace candela {
 
-class DirectLightingIntegrator : public SurfaceIntegrator {
+class DirectLightingIntegrator : public SpecularRecursionIntegrator {
  public:
   enum class Strategy { All, One };
   DirectLightingIntegrator(Strategy strategy, int maxDepth)
-      : strategy_(strategy), maxDepth_(maxDepth) {}
-  Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
-              Float* alpha) const override;
+      : SpecularRecursionIntegrator(maxDepth), strategy_(strategy) {}
+
+ protected:
+  Spectrum directLight(const SurfaceInteraction& isect, const BSDF& bsdf, const Scene& scene,
+                       IntegratorContext& ctx) const override;
 
  private:
-  Spectrum trace(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx, int depth,
-                 Float* alpha) const;
   Strategy strategy_;
-  int maxDepth_;
 };
 
 }  // namespace candela

@@ -1,15 +1,29 @@
 // SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator.
+#include "integrators/ambient_occlusion.h"
 #include "integrators/direct_lighting.h"
 #include "integrators/path.h"
+#include "integrators/whitted.h"
 #include "scene/plugin_factories.h"
 
 namespace candela {
 
-std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc) {
+namespace {
+
+// "maxdepth" is read only by the integrators that have it, so that anywhere else it is reported
+// as unused.
+int maxDepthParam(const PluginDesc& desc) {
   const ParamSet& p = desc.params;
   int maxDepth = p.getOneInt("maxdepth", 5);
   if (maxDepth < 0) throw SceneError(p.locationOf("maxdepth", desc.loc), "maxdepth must be >= 0");
+  return maxDepth;
+}
+
+}  // namespace
+
+std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc) {
+  const ParamSet& p = desc.params;
   if (desc.name == "directlighting") {
+    int maxDepth = maxDepthParam(desc);
     std::string strategy = p.getOneString("strategy", "all");
     DirectLightingIntegrator::Strategy s;
     if (strategy == "all")
@@ -17,12 +31,23 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
     else if (strategy == "one")
       s = DirectLightingIntegrator::Strategy::One;
     else
-      throw SceneError(p.locationOf("strategy", desc.loc),
-                       "unknown strategy '" + strategy + "' (known: all, one)");
+      throw SceneError(
+          p.locationOf("strategy", desc.loc),
+          std::string("unknown strategy '").append(strategy).append("' (known: all, one)"));
     return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
   }
-  if (desc.name == "path") return std::make_unique<PathIntegrator>(maxDepth);
-  throwUnknownPlugin(desc.loc, "surface integrator", desc.name, {"directlighting", "path"});
+  if (desc.name == "path") return std::make_unique<PathIntegrator>(maxDepthParam(desc));
+  if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc));
+  if (desc.name == "ambientocclusion") {
+    // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
+    int nSamples = p.getOneInt("nsamples", 2048);
+    if (nSamples < 1) throw SceneError(p.locationOf("nsamples", desc.loc), "nsamples must be >= 1");
+    Float maxDist = p.getOneFloat("maxdist", kInfinity);
+    if (!(maxDist > 0)) throw SceneError(p.locationOf("maxdist", desc.loc), "maxdist must be > 0");
+    return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist);
+  }
+  throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
+                     {"ambientocclusion", "directlighting", "path", "whitted"});
 }
 
 }  // namespace candela

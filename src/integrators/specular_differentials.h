@@ -1,0 +1,18 @@
+// The ray leaving a perfect specular reflection or refraction, with ray differentials carried
+// along so that textures seen in mirrors and through glass are still filtered (pbrt 2e §10.1.3):
+// the offset rays' hit points come from the tangent-plane differentials, and their directions
+// from differentiating the reflection and refraction formulas with respect to image position.
+#pragma once
+
+#include "core/interaction.h"
+#include "reflection/bsdf.h"
+
+namespace candela {
+
+// isect must have had computeDifferentials(incoming) called. wi is the direction the BSDF
+// sampled; transmission says whether it was refracted through the surface.
+RayDifferential spawnSpecularRay(const SurfaceInteraction& isect, const BSDF& bsdf,
+                                 const RayDifferential& incoming, const Vector3f& wi,
+                                 bool transmission);
+
+}  // namespace candela

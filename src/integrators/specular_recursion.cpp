@@ -1,0 +1,55 @@
+#include "integrators/specular_recursion.h"
+
+#include "accel/primitive.h"
+#include "integrators/specular_differentials.h"
+#include "materials/material.h"
+
+namespace candela {
+
+Spectrum SpecularRecursionIntegrator::Li(const RayDifferential& ray, const Scene& scene,
+                                         IntegratorContext& ctx, Float* alpha) const {
+  return trace(ray, scene, ctx, 0, alpha);
+}
+
+Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Scene& scene,
+                                            IntegratorContext& ctx, int depth, Float* alpha) const {
+  SurfaceInteraction isect;
+  Spectrum l(0);
+  if (!scene.intersect(ray, &isect, ctx.stats)) {
+    *alpha = 0;
+    for (const Light* light : scene.lights()) l += light->Le(ray);
+    return l;
+  }
+  *alpha = 1;
+  const Primitive& prim = *isect.primitive;
+  if (prim.areaLight) l += prim.areaLight->L(isect, isect.wo);
+  if (!prim.material) {
+    // An interface without scattering: continue straight through, at the same depth.
+    Float a;
+    return l + trace(RayDifferential(isect.spawnRay(ray.d)), scene, ctx, depth, &a);
+  }
+  isect.computeDifferentials(ray);
+  const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
+  l += directLight(isect, *bsdf, scene, ctx);
+
+  if (depth + 1 < maxDepth_) {
+    // Perfect specular reflection, then transmission: each is one deterministic direction, so
+    // one sample of each gives the exact recursive term (pbrt 2e §1.3.6).
+    for (bool transmission : {false, true}) {
+      int flags = kSpecular | (transmission ? kTransmission : kReflection);
+      Vector3f wi;
+      Float pdf;
+      Spectrum f =
+          bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf, flags);
+      Float cosTerm = absDot(wi, isect.shading.n);
+      if (pdf > 0 && !f.isBlack() && cosTerm != 0) {
+        Float a;
+        RayDifferential next = spawnSpecularRay(isect, *bsdf, ray, wi, transmission);
+        l += f * trace(next, scene, ctx, depth + 1, &a) * (cosTerm / pdf);
+      }
+    }
+  }
+  return l;
+}
+
+}  // namespace candela
