@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "scene/texture_factory.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
@@ -159,25 +160,15 @@ TEST(TextureLoader, ImageTextureThroughTheFactory) {
   d.type = "spectrum";
   d.name = "imagemap";
   d.loc = FileLoc{dir.path("scene.pbrt"), 2, 1};
-  ParamItem filename;
-  filename.type = ParamType::String;
-  filename.name = "filename";
-  filename.typeName = "string";
-  filename.loc = d.loc;
-  filename.strings = {"grey128.png"};  // relative to the scene file's directory
-  d.params.add(filename);
+  // Relative to the scene file's directory.
+  d.params.add(test::strings("filename", {"grey128.png"}, d.loc));
   std::vector<TextureDesc> descs = {d};
   int loads = 0;
   TextureFactory f(descs, [&](const std::string& path, const std::string& colorSpace) {
     ++loads;
     return loadTextureImage(path, colorSpace, cm);
   });
-  ParamItem ref;
-  ref.type = ParamType::Texture;
-  ref.name = "Kd";
-  ref.strings = {"grey"};
-  ParamSet material;
-  material.add(ref);
+  ParamSet material = test::paramSet({test::texture("Kd", "grey")});
   const Texture<Spectrum>* t = f.spectrum(material, "Kd", Spectrum(1), FileLoc{});
   f.spectrum(material, "Kd", Spectrum(1), FileLoc{});
   EXPECT_EQ(loads, 1);

@@ -36,6 +36,7 @@
 #include "core/sampling.h"
 #include "scene/shape_factory.h"
 #include "shapes/triangle_mesh.h"
+#include "support/param_items.h"
 #include "support/random_geometry.h"
 #include "support/test_device.h"
 
@@ -92,14 +93,7 @@ struct AgreeScene {
         ShapeDesc d;
         d.name = kind;
         d.reverseOrientation = i % 3 == 0;
-        if (i % 2 == 1) {
-          ParamItem phi;
-          phi.type = ParamType::Float;
-          phi.name = "phimax";
-          phi.typeName = "float";
-          phi.floats = {250};
-          d.params.add(phi);
-        }
+        if (i % 2 == 1) d.params.add(test::floats("phimax", {250}));
         addShapes(createShapes(d, nestedTransform(rng, extent)), out);
       }
   }

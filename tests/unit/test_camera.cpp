@@ -6,19 +6,10 @@
 
 #include "cameras/camera.h"
 #include "cameras/perspective_camera.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
-
-ParamItem floatItem(const std::string& name, std::vector<Float> v) {
-  ParamItem item{};
-  item.type = ParamType::Float;
-  item.name = name;
-  item.typeName = "float";
-  item.loc = FileLoc{"camera.pbrt", 2, 9};
-  item.floats = std::move(v);
-  return item;
-}
 
 Float angleBetween(const Vector3f& a, const Vector3f& b) {
   return std::acos(clamp(dot(normalize(a), normalize(b)), -1, 1));
@@ -48,7 +39,7 @@ void expectNear(const Point3f& a, const Point3f& b, Float tol) {
 TEST(PerspectiveCamera, CentreRayAlongViewDirection) {
   Point3f eye(1, 2, 3), look(4, -1, 5);
   ParamSet ps;
-  ps.add(floatItem("fov", {50}));
+  ps.add(test::floats("fov", {50}));
   auto cam = makeCamera(ps, lookAt(eye, look, Vector3f(0, 1, 0)), {200, 100});
   Ray r;
   EXPECT_EQ(cam->generateRay(at(100, 50), &r), 1.f);
@@ -61,7 +52,7 @@ TEST(PerspectiveCamera, CentreRayAlongViewDirection) {
 TEST(PerspectiveCamera, FovSpansTheShorterAxis) {
   const Float fov = 60;
   ParamSet ps;
-  ps.add(floatItem("fov", {fov}));
+  ps.add(test::floats("fov", {fov}));
   Transform identity;
   // Landscape: the fov is vertical; the horizontal half-angle is atan(aspect tan(fov/2)).
   auto wide = makeCamera(ps, identity, {300, 100});
@@ -86,7 +77,7 @@ TEST(PerspectiveCamera, PointAtHalfFovProjectsToTheImageEdge) {
   // The other way round: a world point fov/2 above the axis lands on the top edge (y = 0).
   const Float fov = 40;
   ParamSet ps;
-  ps.add(floatItem("fov", {fov}));
+  ps.add(test::floats("fov", {fov}));
   auto cam = makeCamera(ps, Transform(), {400, 300});
   Float h = std::tan(radians(fov / 2));
   Point3f target(0, 10 * h, 10);
@@ -131,9 +122,9 @@ TEST(PerspectiveCamera, LookAtMapsLookDirectionToPlusZ) {
 TEST(PerspectiveCamera, ThinLensRaysConvergeAtTheFocalDistance) {
   const Float focal = 5;
   ParamSet ps;
-  ps.add(floatItem("lensradius", {0.25f}));
-  ps.add(floatItem("focaldistance", {focal}));
-  ps.add(floatItem("fov", {45}));
+  ps.add(test::floats("lensradius", {0.25f}));
+  ps.add(test::floats("focaldistance", {focal}));
+  ps.add(test::floats("fov", {45}));
   Point3f eye(1, 1, 1), look(1, 1, 10);
   Transform w2c = lookAt(eye, look, Vector3f(0, 1, 0));
   auto cam = makeCamera(ps, w2c, {80, 60});
@@ -161,10 +152,10 @@ TEST(PerspectiveCamera, ThinLensRaysConvergeAtTheFocalDistance) {
 
 TEST(PerspectiveCamera, ClippingPlanesAndShutter) {
   ParamSet ps;
-  ps.add(floatItem("hither", {0.5f}));
-  ps.add(floatItem("yon", {20}));
-  ps.add(floatItem("shutteropen", {1}));
-  ps.add(floatItem("shutterclose", {3}));
+  ps.add(test::floats("hither", {0.5f}));
+  ps.add(test::floats("yon", {20}));
+  ps.add(test::floats("shutteropen", {1}));
+  ps.add(test::floats("shutterclose", {3}));
   // cameraToWorld with a uniform scale: the direction must still be unit length, and tMax must
   // still reach the yon plane.
   Transform w2c = scale(0.5f, 0.5f, 0.5f) * translate(Vector3f(0, 0, -1));
@@ -182,9 +173,9 @@ TEST(PerspectiveCamera, ClippingPlanesAndShutter) {
 TEST(PerspectiveCamera, AnalyticDifferentialsMatchFiniteDifferences) {
   for (Float lens : {0.f, 0.3f}) {
     ParamSet ps;
-    ps.add(floatItem("lensradius", {lens}));
-    ps.add(floatItem("focaldistance", {4}));
-    ps.add(floatItem("fov", {70}));
+    ps.add(test::floats("lensradius", {lens}));
+    ps.add(test::floats("focaldistance", {4}));
+    ps.add(test::floats("fov", {70}));
     auto cam = makeCamera(ps, lookAt(Point3f(0, 1, -3), Point3f(0.5f, 0, 0), Vector3f(0, 1, 0)),
                           {160, 90});
     CameraSample s = at(31.25f, 70.5f);
@@ -210,15 +201,15 @@ TEST(PerspectiveCamera, AnalyticDifferentialsMatchFiniteDifferences) {
 TEST(PerspectiveCamera, ScreenWindowAndFrameAspectRatio) {
   // An explicit screen window [0 1 0 1] makes the top-left image corner look along +z.
   ParamSet ps;
-  ps.add(floatItem("screenwindow", {0, 1, 0, 1}));
+  ps.add(test::floats("screenwindow", {0, 1, 0, 1}));
   auto cam = makeCamera(ps, Transform(), {50, 50});
   Ray r;
   cam->generateRay(at(0, 50), &r);
   expectNear(r.d, Vector3f(0, 0, 1), 1e-6f);
   // frameaspectratio 2 on a square image: the horizontal extent is doubled.
   ParamSet fa;
-  fa.add(floatItem("frameaspectratio", {2}));
-  fa.add(floatItem("fov", {90}));
+  fa.add(test::floats("frameaspectratio", {2}));
+  fa.add(test::floats("fov", {90}));
   cam = makeCamera(fa, Transform(), {50, 50});
   cam->generateRay(at(0, 25), &r);
   EXPECT_NEAR(-r.d.x / r.d.z, 2, 1e-5);
@@ -239,13 +230,13 @@ TEST(CameraFactory, ErrorsAndHalfFov) {
       EXPECT_NE(what.find(known), std::string::npos) << what;
   }
   ParamSet bad;
-  bad.add(floatItem("fov", {180}));
+  bad.add(test::floats("fov", {180}));
   EXPECT_THROW(makeCamera(bad, Transform(), {10, 10}), SceneError);
   ParamSet sw;
-  sw.add(floatItem("screenwindow", {0, 1, 0}));
+  sw.add(test::floats("screenwindow", {0, 1, 0}));
   EXPECT_THROW(makeCamera(sw, Transform(), {10, 10}), SceneError);
   ParamSet half;
-  half.add(floatItem("halffov", {15}));
+  half.add(test::floats("halffov", {15}));
   auto cam = makeCamera(half, Transform(), {10, 10});
   auto& pc = dynamic_cast<PerspectiveCamera&>(*cam);
   EXPECT_FLOAT_EQ(pc.options().fov, 30);

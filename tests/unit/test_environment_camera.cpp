@@ -7,18 +7,10 @@
 #include "cameras/camera.h"
 #include "cameras/environment_camera.h"
 #include "core/rng.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
-
-ParamItem floatItem(const std::string& name, std::vector<Float> v) {
-  ParamItem item{};
-  item.type = ParamType::Float;
-  item.name = name;
-  item.typeName = "float";
-  item.floats = std::move(v);
-  return item;
-}
 
 CameraSample at(Float x, Float y) {
   CameraSample s;
@@ -80,10 +72,10 @@ TEST(EnvironmentCamera, AxesFollowPbrtV2) {
 
 TEST(EnvironmentCamera, OriginClippingSpheresAndCameraTransform) {
   ParamSet ps;
-  ps.add(floatItem("hither", {0.5f}));
-  ps.add(floatItem("yon", {10}));
-  ps.add(floatItem("shutteropen", {2}));
-  ps.add(floatItem("shutterclose", {4}));
+  ps.add(test::floats("hither", {0.5f}));
+  ps.add(test::floats("yon", {10}));
+  ps.add(test::floats("shutteropen", {2}));
+  ps.add(test::floats("shutterclose", {4}));
   Point3f eye(1, -2, 3);
   // Camera looking along world +x with +z up: camera +y (the top row) is world +z.
   Transform w2c = lookAt(eye, eye + Vector3f(1, 0, 0), Vector3f(0, 0, 1));

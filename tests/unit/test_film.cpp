@@ -7,6 +7,7 @@
 #include "film/film.h"
 #include "filters/box_filter.h"
 #include "filters/mitchell_filter.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
@@ -15,14 +16,6 @@ std::unique_ptr<Filter> box() { return std::make_unique<BoxFilter>(Vector2f(0.5f
 
 Bounds2f crop(Float x0, Float x1, Float y0, Float y1) {
   return Bounds2f(Point2f(x0, y0), Point2f(x1, y1));
-}
-
-ParamItem item(ParamType type, const std::string& name) {
-  ParamItem it{};
-  it.type = type;
-  it.name = name;
-  it.loc = FileLoc{"film.pbrt", 6, 4};
-  return it;
 }
 
 TEST(Film, CropWindowPixelBoundsFollowTheCeilRule) {
@@ -110,16 +103,9 @@ TEST(FilmFactory, DefaultsAndExplicitValues) {
   EXPECT_EQ(f->pixelBounds(), Bounds2i(Point2i(0, 0), Point2i(640, 480)));
   EXPECT_EQ(f->filename(), "candela.exr");
 
-  ParamSet ps;
-  ParamItem xr = item(ParamType::Integer, "xresolution");
-  xr.ints = {32};
-  ParamItem yr = item(ParamType::Integer, "yresolution");
-  yr.ints = {16};
-  ParamItem cw = item(ParamType::Float, "cropwindow");
-  cw.floats = {0.5f, 1, 0, 0.5f};
-  ParamItem fn = item(ParamType::String, "filename");
-  fn.strings = {"out.tiff"};
-  for (auto& it : {xr, yr, cw, fn}) ps.add(it);
+  ParamSet ps = test::paramSet({test::ints("xresolution", {32}), test::ints("yresolution", {16}),
+                                test::floats("cropwindow", {0.5f, 1, 0, 0.5f}),
+                                test::strings("filename", {"out.tiff"})});
   f = createFilm("image", ps, box(), loc, std::nullopt);
   EXPECT_EQ(f->fullResolution(), Point2i(32, 16));
   EXPECT_EQ(f->pixelBounds(), Bounds2i(Point2i(16, 0), Point2i(32, 8)));
@@ -133,9 +119,7 @@ TEST(FilmFactory, Errors) {
   FileLoc loc{"f.pbrt", 2, 1};
   EXPECT_THROW(createFilm("rgb", ParamSet(), box(), loc, std::nullopt), SceneError);
   ParamSet bad;
-  ParamItem cw = item(ParamType::Float, "cropwindow");
-  cw.floats = {0.5f, 0.5f, 0, 1};  // no column
-  bad.add(cw);
+  bad.add(test::floats("cropwindow", {0.5f, 0.5f, 0, 1}, FileLoc{"film.pbrt", 6, 4}));  // no column
   try {
     createFilm("image", bad, box(), loc, std::nullopt);
     FAIL();
@@ -143,13 +127,10 @@ TEST(FilmFactory, Errors) {
     EXPECT_EQ(e.location().line, 6) << e.what();
   }
   ParamSet three;
-  cw.floats = {0, 1, 0};
-  three.add(cw);
+  three.add(test::floats("cropwindow", {0, 1, 0}));
   EXPECT_THROW(createFilm("image", three, box(), loc, std::nullopt), SceneError);
   ParamSet res;
-  ParamItem xr = item(ParamType::Integer, "xresolution");
-  xr.ints = {0};
-  res.add(xr);
+  res.add(test::ints("xresolution", {0}));
   EXPECT_THROW(createFilm("image", res, box(), loc, std::nullopt), SceneError);
 }
 

@@ -18,20 +18,11 @@
 #include "filters/triangle_filter.h"
 #include "samplers/random_sampler.h"
 #include "samplers/sampler.h"
+#include "support/param_items.h"
 #include "support/tail_probabilities.h"
 
 namespace candela {
 namespace {
-
-ParamItem floatItem(const std::string& name, std::vector<Float> v) {
-  ParamItem item{};
-  item.type = ParamType::Float;
-  item.name = name;
-  item.typeName = "float";
-  item.loc = FileLoc{"filters.pbrt", 3, 7};
-  item.floats = std::move(v);
-  return item;
-}
 
 // Integral of the shifted Gaussian e^{-a x^2} - e^{-a r^2} over [-r, r].
 double gaussianIntegral1D(double r, double a) {
@@ -312,22 +303,22 @@ TEST(FilterFactory, TriangleAndSincDefaults) {
   EXPECT_EQ(sinc->radius().y, 4.f);
   EXPECT_EQ(s->tau(), 3.f);
   ParamSet ps;
-  ps.add(floatItem("tau", {2}));
-  ps.add(floatItem("ywidth", {1.5f}));
+  ps.add(test::floats("tau", {2}));
+  ps.add(test::floats("ywidth", {1.5f}));
   sinc = createFilter("sinc", ps, loc);
   EXPECT_EQ(dynamic_cast<LanczosSincFilter&>(*sinc).tau(), 2.f);
   EXPECT_EQ(sinc->radius().y, 1.5f);
   ParamSet bad;
-  bad.add(floatItem("tau", {0}));
+  bad.add(test::floats("tau", {0}));
   EXPECT_THROW(createFilter("sinc", bad, loc), SceneError);
 }
 
 TEST(FilterFactory, ReadsParameters) {
   ParamSet ps;
-  ps.add(floatItem("xwidth", {1.25f}));
-  ps.add(floatItem("ywidth", {0.75f}));
-  ps.add(floatItem("B", {0}));
-  ps.add(floatItem("C", {0.5f}));
+  ps.add(test::floats("xwidth", {1.25f}));
+  ps.add(test::floats("ywidth", {0.75f}));
+  ps.add(test::floats("B", {0}));
+  ps.add(test::floats("C", {0.5f}));
   auto f = createFilter("mitchell", ps, FileLoc{});
   EXPECT_EQ(f->radius().x, 1.25f);
   EXPECT_EQ(f->radius().y, 0.75f);
@@ -352,7 +343,7 @@ TEST(FilterFactory, UnknownNameListsKnownFilters) {
 
 TEST(FilterFactory, NonPositiveWidthIsAnErrorAtTheParameter) {
   ParamSet ps;
-  ps.add(floatItem("xwidth", {0}));
+  ps.add(test::floats("xwidth", {0}, FileLoc{"filters.pbrt", 3, 7}));
   try {
     createFilter("gaussian", ps, FileLoc{"b.pbrt", 1, 1});
     FAIL() << "no error";

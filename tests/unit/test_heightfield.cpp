@@ -4,34 +4,17 @@
 
 #include "core/rng.h"
 #include "shapes/heightfield.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
 
-ParamItem intParam(const std::string& name, int v) {
-  ParamItem item;
-  item.type = ParamType::Integer;
-  item.name = name;
-  item.typeName = "integer";
-  item.loc = FileLoc{"hf.pbrt", 3, 5};
-  item.ints = {v};
-  return item;
-}
-ParamItem floatsParam(const std::string& name, std::vector<Float> v) {
-  ParamItem item;
-  item.type = ParamType::Float;
-  item.name = name;
-  item.typeName = "float";
-  item.loc = FileLoc{"hf.pbrt", 4, 5};
-  item.floats = std::move(v);
-  return item;
-}
+// The lines of the counts and of the heights: each error must point to the one at fault.
+const FileLoc kCountsLoc{"hf.pbrt", 3, 5}, kHeightsLoc{"hf.pbrt", 4, 5};
+
 ParamSet heightfieldParams(int nu, int nv, std::vector<Float> z) {
-  ParamSet ps;
-  ps.add(intParam("nu", nu));
-  ps.add(intParam("nv", nv));
-  ps.add(floatsParam("Pz", std::move(z)));
-  return ps;
+  return test::paramSet({test::ints("nu", {nu}, kCountsLoc), test::ints("nv", {nv}, kCountsLoc),
+                         test::floats("Pz", std::move(z), kHeightsLoc)});
 }
 
 TEST(Heightfield, MeshLayout) {
@@ -114,12 +97,12 @@ TEST(Heightfield, FactoryErrors) {
   expectError(heightfieldParams(2, 2, {0, 1, std::numeric_limits<Float>::quiet_NaN(), 3}), 4,
               "not finite");
   ParamSet noNu;
-  noNu.add(intParam("nv", 2));
-  noNu.add(floatsParam("Pz", {0, 0, 0, 0}));
+  noNu.add(test::ints("nv", {2}, kCountsLoc));
+  noNu.add(test::floats("Pz", {0, 0, 0, 0}, kHeightsLoc));
   expectError(noNu, 1, "missing \"integer nu\"");
   ParamSet noPz;
-  noPz.add(intParam("nu", 2));
-  noPz.add(intParam("nv", 2));
+  noPz.add(test::ints("nu", {2}, kCountsLoc));
+  noPz.add(test::ints("nv", {2}, kCountsLoc));
   expectError(noPz, 1, "missing \"float Pz\"");
 }
 

@@ -3,57 +3,28 @@
 
 #include "scene/shape_factory.h"
 #include "shapes/loop_subdiv_shape.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
 
-ParamItem item(ParamType type, const std::string& typeName, const std::string& name) {
-  ParamItem it;
-  it.type = type;
-  it.name = name;
-  it.typeName = typeName;
-  it.loc = FileLoc{"subd.pbrt", 2, 7};
-  return it;
-}
-
 ParamSet tetrahedronParams(int levels) {
-  ParamSet ps;
-  ParamItem p = item(ParamType::Point3, "point3", "P");
-  p.floats = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1};
-  ParamItem i = item(ParamType::Integer, "integer", "indices");
-  i.ints = {0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2};
-  ParamItem n = item(ParamType::Integer, "integer", "nlevels");
-  n.ints = {levels};
-  ParamItem uv = item(ParamType::Float, "float", "uv");
-  uv.floats = {0, 0, 1, 0, 0, 1, 1, 1};
-  ps.add(p);
-  ps.add(i);
-  ps.add(n);
-  ps.add(uv);
-  return ps;
+  return test::paramSet({test::points("P", {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1}),
+                         test::ints("indices", {0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2}),
+                         test::ints("nlevels", {levels}),
+                         test::floats("uv", {0, 0, 1, 0, 0, 1, 1, 1})});
 }
 
 // An octahedron without its last face: a boundary, and inside vertices of valence 4, where the
 // draft's β and Loop's differ; uv and, if asked, user normals per vertex.
 ParamSet openOctahedronParams(int levels, bool withNormals) {
-  ParamSet ps;
-  ParamItem p = item(ParamType::Point3, "point3", "P");
-  p.floats = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
-  ParamItem i = item(ParamType::Integer, "integer", "indices");
-  i.ints = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5};
-  ParamItem n = item(ParamType::Integer, "integer", "nlevels");
-  n.ints = {levels};
-  ParamItem uv = item(ParamType::Float, "float", "uv");
-  uv.floats = {1, 0.5f, 0, 0.5f, 0.5f, 1, 0.5f, 0, 0.5f, 0.5f, 0, 0};
-  ps.add(p);
-  ps.add(i);
-  ps.add(n);
-  ps.add(uv);
-  if (withNormals) {
-    ParamItem normals = item(ParamType::Normal3, "normal", "N");
-    normals.floats = p.floats;
-    ps.add(normals);
-  }
+  std::vector<Float> p = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
+  ParamSet ps = test::paramSet(
+      {test::points("P", p),
+       test::ints("indices", {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5}),
+       test::ints("nlevels", {levels}),
+       test::floats("uv", {1, 0.5f, 0, 0.5f, 0.5f, 1, 0.5f, 0, 0.5f, 0.5f, 0, 0})});
+  if (withNormals) ps.add(test::normals("N", p));  // unit positions: their own normals
   return ps;
 }
 
@@ -103,9 +74,7 @@ TEST(LoopSubdivShape, RegisteredAndErrorsNameTheFace) {
   EXPECT_EQ(out.shapes.size(), 64u);
   ASSERT_TRUE(out.mesh);
   desc.params = tetrahedronParams(2);
-  ParamItem bad = item(ParamType::Integer, "integer", "indices");
-  bad.ints = {0, 1, 2, 0, 2, 2};
-  desc.params.add(bad);
+  desc.params.add(test::ints("indices", {0, 1, 2, 0, 2, 2}));
   try {
     createShapes(desc, Transform());
     FAIL();

@@ -13,6 +13,7 @@
 #include "materials/substrate.h"
 #include "reflection/microfacet.h"
 #include "scene/material_factory.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
@@ -211,14 +212,8 @@ TEST(MaterialFactory, UnknownMaterialListsTheNames) {
   SceneDescription scene;
   scene.materials = {desc("velvet"), desc("felt"), desc("clay"), desc("mix")};
   scene.namedMaterials["loop"] = 3;
-  for (const char* n : {"namedmaterial1", "namedmaterial2"}) {
-    ParamItem item;
-    item.type = ParamType::String;
-    item.name = n;
-    item.typeName = "string";
-    item.strings = {"loop"};
-    scene.materials[3].params.add(item);
-  }
+  for (const char* n : {"namedmaterial1", "namedmaterial2"})
+    scene.materials[3].params.add(test::strings(n, {"loop"}));
   TextureFactory textures(scene.textures);
   std::vector<std::unique_ptr<Material>> owned;
   MaterialFactory f(scene, textures, &owned);

@@ -7,19 +7,10 @@
 
 #include "cameras/camera.h"
 #include "cameras/orthographic_camera.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
-
-ParamItem floatItem(const std::string& name, std::vector<Float> v) {
-  ParamItem item{};
-  item.type = ParamType::Float;
-  item.name = name;
-  item.typeName = "float";
-  item.loc = FileLoc{"ortho.pbrt", 4, 2};
-  item.floats = std::move(v);
-  return item;
-}
 
 CameraSample at(Float x, Float y, Point2f lens = Point2f(0.5f, 0.5f)) {
   CameraSample s;
@@ -77,7 +68,7 @@ TEST(OrthographicCamera, RasterMapsOntoTheScreenWindow) {
   }
   // An explicit window, portrait image: the window maps onto the image whatever its aspect.
   ParamSet ps;
-  ps.add(floatItem("screenwindow", {-3, 5, 10, 12}));
+  ps.add(test::floats("screenwindow", {-3, 5, 10, 12}));
   cam = makeOrtho(ps, Transform(), {40, 80});
   Ray r;
   cam->generateRay(at(10, 60), &r);  // x: -3 + 8 * 10/40 = -1; y: 12 - 2 * 60/80 = 10.5
@@ -86,10 +77,10 @@ TEST(OrthographicCamera, RasterMapsOntoTheScreenWindow) {
 
 TEST(OrthographicCamera, ClippingPlanesAndShutter) {
   ParamSet ps;
-  ps.add(floatItem("hither", {2}));
-  ps.add(floatItem("yon", {9}));
-  ps.add(floatItem("shutteropen", {0.5f}));
-  ps.add(floatItem("shutterclose", {1.5f}));
+  ps.add(test::floats("hither", {2}));
+  ps.add(test::floats("yon", {9}));
+  ps.add(test::floats("shutteropen", {0.5f}));
+  ps.add(test::floats("shutterclose", {1.5f}));
   Transform w2c = scale(2, 2, 2) * translate(Vector3f(1, 0, 0));
   auto cam = makeOrtho(ps, w2c, {10, 10});
   CameraSample s = at(3, 4);
@@ -108,8 +99,8 @@ TEST(OrthographicCamera, PointsOnTheFocalPlaneStaySharp) {
   // lie within lensradius of it (pbrt-v2/v3 centre it on the axis instead).
   const Float focal = 6, lens = 0.4f;
   ParamSet ps;
-  ps.add(floatItem("lensradius", {lens}));
-  ps.add(floatItem("focaldistance", {focal}));
+  ps.add(test::floats("lensradius", {lens}));
+  ps.add(test::floats("focaldistance", {focal}));
   auto cam = makeOrtho(ps, Transform(), {80, 80});
   auto& ortho = dynamic_cast<OrthographicCamera&>(*cam);
   for (Point2f film : {Point2f(40, 40), Point2f(2.5f, 70), Point2f(79, 3)}) {
@@ -139,8 +130,8 @@ TEST(OrthographicCamera, PointsOnTheFocalPlaneStaySharp) {
 TEST(OrthographicCamera, AnalyticDifferentialsMatchFiniteDifferences) {
   for (Float lens : {0.f, 0.3f}) {
     ParamSet ps;
-    ps.add(floatItem("lensradius", {lens}));
-    ps.add(floatItem("focaldistance", {4}));
+    ps.add(test::floats("lensradius", {lens}));
+    ps.add(test::floats("focaldistance", {4}));
     auto cam =
         makeOrtho(ps, lookAt(Point3f(0, 1, -3), Point3f(0.5f, 0, 0), Vector3f(0, 1, 0)), {160, 90});
     CameraSample s = at(31.25f, 70.5f, Point2f(0.8f, 0.35f));
@@ -165,14 +156,14 @@ TEST(OrthographicCamera, AnalyticDifferentialsMatchFiniteDifferences) {
 
 TEST(OrthographicCamera, FactoryErrors) {
   ParamSet sw;
-  sw.add(floatItem("screenwindow", {1, 1, 0, 2}));
+  sw.add(test::floats("screenwindow", {1, 1, 0, 2}));
   EXPECT_THROW(makeOrtho(sw, Transform(), {10, 10}), SceneError);
   ParamSet clip;
-  clip.add(floatItem("hither", {5}));
-  clip.add(floatItem("yon", {1}));
+  clip.add(test::floats("hither", {5}));
+  clip.add(test::floats("yon", {1}));
   EXPECT_THROW(makeOrtho(clip, Transform(), {10, 10}), SceneError);
   ParamSet lens;
-  lens.add(floatItem("lensradius", {-1}));
+  lens.add(test::floats("lensradius", {-1}));
   EXPECT_THROW(makeOrtho(lens, Transform(), {10, 10}), SceneError);
 }
 

@@ -1,28 +1,11 @@
 #include <gtest/gtest.h>
 
 #include "core/paramset.h"
+#include "support/param_items.h"
 
 using namespace candela;
 
 namespace {
-
-ParamItem floats(const std::string& name, ParamType type, std::vector<Float> v, int line = 3) {
-  ParamItem item;
-  item.type = type;
-  item.name = name;
-  item.loc = FileLoc{"p.pbrt", line, 9};
-  item.floats = std::move(v);
-  return item;
-}
-
-ParamItem strings(const std::string& name, ParamType type, std::vector<std::string> v) {
-  ParamItem item;
-  item.type = type;
-  item.name = name;
-  item.loc = FileLoc{"p.pbrt", 7, 2};
-  item.strings = std::move(v);
-  return item;
-}
 
 template <typename F>
 std::string errorOf(F f) {
@@ -38,22 +21,14 @@ std::string errorOf(F f) {
 
 TEST(ParamSet, SingleValuesAndDefaults) {
   ParamSet ps;
-  ps.add(floats("radius", ParamType::Float, {2.5f}));
-  ParamItem n;
-  n.type = ParamType::Integer;
-  n.name = "nsamples";
-  n.ints = {4};
-  ps.add(n);
-  ParamItem b;
-  b.type = ParamType::Bool;
-  b.name = "flag";
-  b.bools = {true};
-  ps.add(b);
-  ps.add(strings("filename", ParamType::String, {"a.exr"}));
-  ps.add(floats("from", ParamType::Point3, {1, 2, 3}));
-  ps.add(floats("dir", ParamType::Vector3, {0, 0, 1}));
-  ps.add(floats("n", ParamType::Normal3, {0, 1, 0}));
-  ps.add(floats("Kd", ParamType::Spectrum, {.1f, .2f, .3f}));
+  ps.add(test::floats("radius", {2.5f}));
+  ps.add(test::ints("nsamples", {4}));
+  ps.add(test::bools("flag", {true}));
+  ps.add(test::strings("filename", {"a.exr"}));
+  ps.add(test::points("from", {1, 2, 3}));
+  ps.add(test::vectors("dir", {0, 0, 1}));
+  ps.add(test::normals("n", {0, 1, 0}));
+  ps.add(test::rgb("Kd", {.1f, .2f, .3f}));
 
   EXPECT_EQ(ps.getOneFloat("radius", 1), 2.5f);
   EXPECT_EQ(ps.getOneFloat("absent", 7), 7.f);
@@ -69,44 +44,42 @@ TEST(ParamSet, SingleValuesAndDefaults) {
 
 TEST(ParamSet, AddReplacesSameName) {
   ParamSet ps;
-  ps.add(floats("radius", ParamType::Float, {1}));
-  ps.add(floats("radius", ParamType::Float, {2}));
+  ps.add(test::floats("radius", {1}));
+  ps.add(test::floats("radius", {2}));
   EXPECT_EQ(ps.items().size(), 1u);
   EXPECT_EQ(ps.getOneFloat("radius", 0), 2.f);
 }
 
 TEST(ParamSet, TypeMismatchErrorsAtTheItem) {
   ParamSet ps;
-  ParamItem item = strings("radius", ParamType::String, {"big"});
-  item.typeName = "string";
-  ps.add(item);
+  ps.add(test::strings("radius", {"big"}, FileLoc{"p.pbrt", 7, 2}));
   EXPECT_EQ(errorOf([&] { ps.getOneFloat("radius", 1); }),
             "p.pbrt:7:2: error: parameter \"string radius\" has type 'string', expected 'float'");
 }
 
 TEST(ParamSet, WrongCountErrorsAtTheItem) {
   ParamSet ps;
-  ps.add(floats("radius", ParamType::Float, {1, 2}, 5));
+  ps.add(test::floats("radius", {1, 2}, FileLoc{"p.pbrt", 5, 9}));
   EXPECT_EQ(errorOf([&] { ps.getOneFloat("radius", 1); }),
             "p.pbrt:5:9: error: parameter \"float radius\" needs exactly one value, found 2");
 }
 
 TEST(ParamSet, SpectrumOfANonSpectrumItemErrors) {
   ParamSet ps;
-  ps.add(floats("Kd", ParamType::Float, {0.5f}, 4));
+  ps.add(test::floats("Kd", {0.5f}, FileLoc{"p.pbrt", 4, 9}));
   EXPECT_EQ(errorOf([&] { ps.getOneSpectrum("Kd", Spectrum()); }),
             "p.pbrt:4:9: error: parameter \"float Kd\" has type 'float', expected 'spectrum'");
 }
 
 TEST(ParamSet, Arrays) {
   ParamSet ps;
-  ps.add(floats("P", ParamType::Point3, {0, 0, 0, 1, 2, 3}));
-  ps.add(floats("N", ParamType::Normal3, {0, 0, 1}));
-  ps.add(floats("S", ParamType::Vector3, {1, 0, 0}));
-  ps.add(floats("st", ParamType::Point2, {0, 1, 2, 3}));
-  ps.add(floats("c", ParamType::Spectrum, {1, 1, 1, 0, 0, 0}));
-  ps.add(floats("w", ParamType::Float, {1, 2, 3}));
-  ps.add(strings("names", ParamType::String, {"a", "b"}));
+  ps.add(test::points("P", {0, 0, 0, 1, 2, 3}));
+  ps.add(test::normals("N", {0, 0, 1}));
+  ps.add(test::vectors("S", {1, 0, 0}));
+  ps.add(test::point2s("st", {0, 1, 2, 3}));
+  ps.add(test::rgb("c", {1, 1, 1, 0, 0, 0}));
+  ps.add(test::floats("w", {1, 2, 3}));
+  ps.add(test::strings("names", {"a", "b"}));
   EXPECT_EQ(ps.getPoint3fArray("P").size(), 2u);
   EXPECT_EQ(ps.getPoint3fArray("P")[1], Point3f(1, 2, 3));
   EXPECT_EQ(ps.getNormal3fArray("N").size(), 1u);
@@ -122,11 +95,11 @@ TEST(ParamSet, Arrays) {
 TEST(ParamSet, Point2ArrayFromFloatPairs) {
   // pbrt-v2 meshes: "float uv" [ 0 0 5 0 5 5 0 5 ].
   ParamSet ps;
-  ps.add(floats("uv", ParamType::Float, {0, 0, 5, 0, 5, 5, 0, 5}));
+  ps.add(test::floats("uv", {0, 0, 5, 0, 5, 5, 0, 5}));
   std::vector<Point2f> uv = ps.getPoint2fArray("uv");
   ASSERT_EQ(uv.size(), 4u);
   EXPECT_EQ(uv[2], Point2f(5, 5));
-  ps.add(floats("st", ParamType::Float, {0, 0, 5}, 6));
+  ps.add(test::floats("st", {0, 0, 5}, FileLoc{"p.pbrt", 6, 9}));
   EXPECT_EQ(errorOf([&] { ps.getPoint2fArray("st"); }),
             "p.pbrt:6:9: error: parameter \"float st\" needs (u, v) pairs: an even count of "
             "numbers, found 3");
@@ -134,15 +107,15 @@ TEST(ParamSet, Point2ArrayFromFloatPairs) {
 
 TEST(ParamSet, ArrayTypeMismatchErrors) {
   ParamSet ps;
-  ps.add(floats("P", ParamType::Vector3, {0, 0, 0}, 8));
+  ps.add(test::vectors("P", {0, 0, 0}, FileLoc{"p.pbrt", 8, 9}));
   EXPECT_EQ(errorOf([&] { ps.getPoint3fArray("P"); }),
             "p.pbrt:8:9: error: parameter \"vector3 P\" has type 'vector3', expected 'point3'");
 }
 
 TEST(ParamSet, TextureLookupFallsBackQuietly) {
   ParamSet ps;
-  ps.add(strings("Kd", ParamType::Texture, {"checks"}));
-  ps.add(floats("Ks", ParamType::Spectrum, {1, 1, 1}));
+  ps.add(test::texture("Kd", "checks"));
+  ps.add(test::rgb("Ks", {1, 1, 1}));
   EXPECT_EQ(ps.getTexture("Kd"), "checks");
   EXPECT_EQ(ps.getTexture("Ks"), "");  // a constant colour, not a texture: no error
   EXPECT_EQ(ps.getTexture("bumpmap"), "");
@@ -151,9 +124,9 @@ TEST(ParamSet, TextureLookupFallsBackQuietly) {
 
 TEST(ParamSet, UnusedItemsAreReported) {
   ParamSet ps;
-  ps.add(floats("radius", ParamType::Float, {1}));
-  ps.add(floats("zmin", ParamType::Float, {1}));
-  ps.add(floats("_private", ParamType::Float, {1}));
+  ps.add(test::floats("radius", {1}));
+  ps.add(test::floats("zmin", {1}, FileLoc{"p.pbrt", 3, 9}));
+  ps.add(test::floats("_private", {1}));
   ps.getOneFloat("radius", 0);
   std::vector<std::string> unused;
   ps.forEachUnused([&](const ParamItem& i) { unused.push_back(i.name); });

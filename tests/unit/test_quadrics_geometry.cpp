@@ -6,6 +6,7 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "quadric_models.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
@@ -364,21 +365,8 @@ TEST(Quadrics, ZeroAreaShapesAreNeverHit) {
   EXPECT_EQ(pdf, 0);
 }
 
-ParamItem floatParam(const std::string& name, std::vector<Float> v) {
-  ParamItem item;
-  item.type = ParamType::Float;
-  item.name = name;
-  item.typeName = "float";
-  item.loc = FileLoc{"scene.pbrt", 9, 4};
-  item.floats = std::move(v);
-  return item;
-}
-ParamItem pointParam(const std::string& name, Point3f p) {
-  ParamItem item = floatParam(name, {p.x, p.y, p.z});
-  item.type = ParamType::Point3;
-  item.typeName = "point3";
-  return item;
-}
+// Where the parameters of the failing cases are written: the errors must point there.
+const FileLoc kBadLoc{"scene.pbrt", 9, 4};
 
 void expectSceneError(const std::function<void()>& f, const std::string& word) {
   try {
@@ -405,33 +393,33 @@ TEST(Quadrics, FactoryDefaults) {
 
 TEST(Quadrics, FactoryParameters) {
   ParamSet ps;
-  ps.add(floatParam("radius", {2}));
-  ps.add(floatParam("zmin", {-0.5f}));
-  ps.add(floatParam("zmax", {1}));
-  ps.add(floatParam("thetamax", {180}));  // the lrt draft's name for phimax
+  ps.add(test::floats("radius", {2}));
+  ps.add(test::floats("zmin", {-0.5f}));
+  ps.add(test::floats("zmax", {1}));
+  ps.add(test::floats("thetamax", {180}));  // the lrt draft's name for phimax
   auto s = createCylinderShape(Transform(), false, ps);
   EXPECT_STREQ(s->kind(), "cylinder");
   EXPECT_NEAR(s->area(), 1.5f * kPi * 2, 1e-5);
   ps.forEachUnused([](const ParamItem& item) { ADD_FAILURE() << item.name << " unused"; });
 
   ParamSet disk;
-  disk.add(floatParam("height", {1}));
-  disk.add(floatParam("radius", {2}));
-  disk.add(floatParam("innerradius", {1}));
-  disk.add(floatParam("phimax", {90}));
+  disk.add(test::floats("height", {1}));
+  disk.add(test::floats("radius", {2}));
+  disk.add(test::floats("innerradius", {1}));
+  disk.add(test::floats("phimax", {90}));
   EXPECT_NEAR(createDiskShape(Transform(), false, disk)->area(), kPiOver4 * 3, 1e-5);
   disk.forEachUnused([](const ParamItem& item) { ADD_FAILURE() << item.name << " unused"; });
 
   ParamSet hyp;
-  hyp.add(pointParam("p1", Point3f(1, 0, 0)));
-  hyp.add(pointParam("p2", Point3f(1, 0, 2)));
+  hyp.add(test::points("p1", {1, 0, 0}));
+  hyp.add(test::points("p2", {1, 0, 2}));
   EXPECT_NEAR(createHyperboloidShape(Transform(), false, hyp)->area(), 4 * kPi, 1e-5);  // cylinder
 }
 
 TEST(Quadrics, FactoryErrors) {
   auto with = [](const std::string& name, std::vector<Float> v) {
     ParamSet ps;
-    ps.add(floatParam(name, std::move(v)));
+    ps.add(test::floats(name, std::move(v), kBadLoc));
     return ps;
   };
   expectSceneError([&] { createCylinderShape(Transform(), false, with("radius", {-1})); },
@@ -443,8 +431,8 @@ TEST(Quadrics, FactoryErrors) {
   expectSceneError([&] { createCylinderShape(Transform(), false, with("zmax", {kInfinity})); },
                    "zmax");
   ParamSet hyp;
-  hyp.add(pointParam("p1", Point3f(0, 0, 1)));
-  hyp.add(pointParam("p2", Point3f(1, 0, 1)));
+  hyp.add(test::points("p1", {0, 0, 1}, kBadLoc));
+  hyp.add(test::points("p2", {1, 0, 1}, kBadLoc));
   expectSceneError([&] { createHyperboloidShape(Transform(), false, hyp); }, "differ in z");
 }
 

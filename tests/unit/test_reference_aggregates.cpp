@@ -14,35 +14,11 @@
 #include "core/rng.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
+#include "support/param_items.h"
 #include "support/test_device.h"
 
 namespace candela {
 namespace {
-
-ParamItem intParam(const std::string& name, int v) {
-  ParamItem p;
-  p.type = ParamType::Integer;
-  p.name = name;
-  p.typeName = "integer";
-  p.ints = {v};
-  return p;
-}
-ParamItem floatParam(const std::string& name, Float v) {
-  ParamItem p;
-  p.type = ParamType::Float;
-  p.name = name;
-  p.typeName = "float";
-  p.floats = {v};
-  return p;
-}
-ParamItem stringParam(const std::string& name, const std::string& v) {
-  ParamItem p;
-  p.type = ParamType::String;
-  p.name = name;
-  p.typeName = "string";
-  p.strings = {v};
-  return p;
-}
 
 // Shapes kept alive for a SceneGeometry that refers to them.
 struct Scene {
@@ -109,16 +85,16 @@ TEST(AggregateFactory, UnknownNameListsTheKnownOnes) {
 TEST(AggregateFactory, BadParametersAreSceneErrors) {
   SceneGeometry g;
   ParamSet a;
-  a.add(stringParam("splitmethod", "octant"));
+  a.add(test::strings("splitmethod", {"octant"}));
   EXPECT_THROW(make("bvh", g, a), SceneError);
   ParamSet b;
-  b.add(floatParam("emptybonus", 1.5f));
+  b.add(test::floats("emptybonus", {1.5f}));
   EXPECT_THROW(make("kdtree", g, b), SceneError);
   ParamSet c;
-  c.add(intParam("maxprims", 0));
+  c.add(test::ints("maxprims", {0}));
   EXPECT_THROW(make("kdtree", g, c), SceneError);
   ParamSet d;
-  d.add(intParam("maxnodeprims", 0));
+  d.add(test::ints("maxnodeprims", {0}));
   EXPECT_THROW(make("bvh", g, d), SceneError);
 }
 
@@ -131,9 +107,9 @@ TEST(AggregateFactory, ParametersAreReadAndUsed) {
   }
   // The draft's App. C types emptybonus "integer"; it is accepted, and every item is used.
   ParamSet k;
-  k.add(intParam("emptybonus", 0));
-  k.add(intParam("maxdepth", 3));
-  k.add(intParam("intersectcost", 80));
+  k.add(test::ints("emptybonus", {0}));
+  k.add(test::ints("maxdepth", {3}));
+  k.add(test::ints("intersectcost", {80}));
   auto kd = make("kdtree", s.geometry, k);
   EXPECT_LE(kd->stats().counts["max depth"], 3);
   int unused = 0;
@@ -141,14 +117,14 @@ TEST(AggregateFactory, ParametersAreReadAndUsed) {
   EXPECT_EQ(unused, 0);
 
   ParamSet b;
-  b.add(intParam("maxnodeprims", 50));
-  b.add(stringParam("splitmethod", "equal"));
+  b.add(test::ints("maxnodeprims", {50}));
+  b.add(test::strings("splitmethod", {"equal"}));
   auto bvh = make("bvh", s.geometry, b);
   // 200 items halved until at most 50 remain: 7 nodes.
   EXPECT_EQ(bvh->stats().counts["nodes"], 7);
 
   ParamSet gp;
-  gp.add(intParam("refineimmediately", 1));
+  gp.add(test::ints("refineimmediately", {1}));
   make("grid", s.geometry, gp);
   unused = 0;
   gp.forEachUnused([&](const ParamItem&) { ++unused; });

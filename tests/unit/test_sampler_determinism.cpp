@@ -13,32 +13,13 @@
 #include "core/rng.h"
 #include "samplers/adaptive_sampler.h"
 #include "samplers/sampler.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
 
 const char* const kSamplers[] = {"random", "stratified",    "lowdiscrepancy",
                                  "halton", "bestcandidate", "adaptive"};
-
-ParamItem intItem(const std::string& name, int v) {
-  ParamItem item{};
-  item.type = ParamType::Integer;
-  item.name = name;
-  item.typeName = "integer";
-  item.loc = FileLoc{"s.pbrt", 6, 4};
-  item.ints = {v};
-  return item;
-}
-
-ParamItem stringItem(const std::string& name, const std::string& v) {
-  ParamItem item{};
-  item.type = ParamType::String;
-  item.name = name;
-  item.typeName = "string";
-  item.loc = FileLoc{"s.pbrt", 7, 4};
-  item.strings = {v};
-  return item;
-}
 
 // The values of one pixel sample: the image plane, then 2D, 1D, 2D, 1D, ...
 std::vector<Float> sampleValues(Sampler& s, Point2i pixel, int index, int dims = 8) {
@@ -123,7 +104,7 @@ TEST(SamplerFactory, NewSamplersDefaultsAndPowerOfTwoRounding) {
     EXPECT_EQ(createSampler(name, ParamSet(), 1, 0, loc, warn)->samplesPerPixel(), 4) << name;
   EXPECT_TRUE(warnings.empty());
   ParamSet five;
-  five.add(intItem("pixelsamples", 5));
+  five.add(test::ints("pixelsamples", {5}, FileLoc{"s.pbrt", 6, 4}));
   EXPECT_EQ(createSampler("lowdiscrepancy", five, 1, 0, loc, warn)->samplesPerPixel(), 8);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("s.pbrt:6:4"), std::string::npos) << warnings[0];
@@ -148,9 +129,9 @@ TEST(AdaptiveSampler, FactoryDefaultsAndErrors) {
   std::vector<std::string> warnings;
   SamplerWarning warn = [&](const FileLoc&, const std::string& m) { warnings.push_back(m); };
   ParamSet ps;
-  ps.add(intItem("minsamples", 3));
-  ps.add(intItem("maxsamples", 20));
-  ps.add(stringItem("method", "shapeid"));
+  ps.add(test::ints("minsamples", {3}));
+  ps.add(test::ints("maxsamples", {20}));
+  ps.add(test::strings("method", {"shapeid"}));
   s = createSampler("adaptive", ps, 1, 0, loc, warn);
   EXPECT_EQ(s->initialSamplesPerPixel(), 4);
   EXPECT_EQ(s->samplesPerPixel(), 32);
@@ -162,10 +143,10 @@ TEST(AdaptiveSampler, FactoryDefaultsAndErrors) {
   EXPECT_EQ(s->initialSamplesPerPixel(), 2);
 
   ParamSet bad;
-  bad.add(intItem("minsamples", 64));
+  bad.add(test::ints("minsamples", {64}));
   EXPECT_THROW(createSampler("adaptive", bad, 1, 0, loc), SceneError);
   ParamSet method;
-  method.add(stringItem("method", "variance"));
+  method.add(test::strings("method", {"variance"}, FileLoc{"s.pbrt", 7, 4}));
   try {
     createSampler("adaptive", method, 1, 0, loc);
     FAIL();

@@ -12,6 +12,7 @@
 #include "samplers/random_sampler.h"
 #include "samplers/sampler.h"
 #include "samplers/stratified_sampler.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
@@ -33,25 +34,6 @@ std::vector<Float> sampleValues(Sampler& s, Point2i pixel, int index, int dims) 
     }
   }
   return v;
-}
-
-ParamItem intItem(const std::string& name, int v) {
-  ParamItem item{};
-  item.type = ParamType::Integer;
-  item.name = name;
-  item.typeName = "integer";
-  item.loc = FileLoc{"samplers.pbrt", 5, 3};
-  item.ints = {v};
-  return item;
-}
-
-ParamItem boolItem(const std::string& name, bool v) {
-  ParamItem item{};
-  item.type = ParamType::Bool;
-  item.name = name;
-  item.typeName = "bool";
-  item.bools = {v};
-  return item;
 }
 
 TEST(StratifiedSampler, EachStratumOncePerPixelPerDimension) {
@@ -215,21 +197,21 @@ TEST(SamplerFactory, DefaultsAndParameters) {
   EXPECT_TRUE(s->jitter());
 
   ParamSet ps;
-  ps.add(intItem("xsamples", 3));
-  ps.add(intItem("ysamples", 5));
-  ps.add(boolItem("jitter", false));
+  ps.add(test::ints("xsamples", {3}));
+  ps.add(test::ints("ysamples", {5}));
+  ps.add(test::bools("jitter", {false}));
   strat = createSampler("stratified", ps, 1, 0, loc);
   EXPECT_EQ(strat->samplesPerPixel(), 15);
   EXPECT_FALSE(dynamic_cast<StratifiedSampler&>(*strat).jitter());
 
   // lrt's "integer jitter" 0.
   ParamSet lrt;
-  lrt.add(intItem("jitter", 0));
+  lrt.add(test::ints("jitter", {0}));
   EXPECT_FALSE(
       dynamic_cast<StratifiedSampler&>(*createSampler("stratified", lrt, 1, 0, loc)).jitter());
 
   ParamSet rp;
-  rp.add(intItem("pixelsamples", 9));
+  rp.add(test::ints("pixelsamples", {9}));
   EXPECT_EQ(createSampler("random", rp, 1, 0, loc)->samplesPerPixel(), 9);
   // The stratified sampler takes a pixelsamples count as strata when xsamples/ysamples are absent.
   auto fromCount = createSampler("stratified", rp, 1, 0, loc);
@@ -263,7 +245,7 @@ TEST(SamplerFactory, ErrorsNameTheProblem) {
       EXPECT_NE(what.find(known), std::string::npos) << what;
   }
   ParamSet ps;
-  ps.add(intItem("xsamples", 0));
+  ps.add(test::ints("xsamples", {0}, FileLoc{"samplers.pbrt", 5, 3}));
   try {
     createSampler("stratified", ps, 1, 0, FileLoc{"x.pbrt", 1, 1});
     FAIL();

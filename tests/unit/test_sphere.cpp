@@ -5,6 +5,7 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "shapes/sphere.h"
+#include "support/param_items.h"
 #include "support/random_geometry.h"
 
 namespace candela {
@@ -269,28 +270,18 @@ TEST(SphereShape, RejectsBadRays) {
   EXPECT_FALSE(s.intersect(Ray(Point3f(0, 0, -5), Vector3f(0, 0, 1), nan), &t, nullptr));
 }
 
-ParamItem floatParam(const std::string& name, Float v) {
-  ParamItem item;
-  item.type = ParamType::Float;
-  item.name = name;
-  item.typeName = "float";
-  item.loc = FileLoc{"scene.pbrt", 7, 3};
-  item.floats = {v};
-  return item;
-}
-
 TEST(SphereShape, Factory) {
   ParamSet ps;
-  ps.add(floatParam("radius", 2));
-  ps.add(floatParam("zmax", 1));
-  ps.add(floatParam("phimax", 180));
+  ps.add(test::floats("radius", {2}));
+  ps.add(test::floats("zmax", {1}));
+  ps.add(test::floats("phimax", {180}));
   std::unique_ptr<Shape> s = createSphereShape(Transform(), false, ps);
   EXPECT_STREQ(s->kind(), "sphere");
   EXPECT_NEAR(s->area(), kPi * 2 * 3, 1e-4);
   ps.forEachUnused([](const ParamItem& item) { ADD_FAILURE() << item.name << " unused"; });
 
   ParamSet bad;
-  bad.add(floatParam("radius", -1));
+  bad.add(test::floats("radius", {-1}, FileLoc{"scene.pbrt", 7, 3}));
   try {
     createSphereShape(Transform(), false, bad);
     FAIL() << "expected a SceneError";

@@ -3,47 +3,16 @@
 #include <gtest/gtest.h>
 
 #include "scene/texture_factory.h"
+#include "support/param_items.h"
 #include "textures/image_texture.h"
 
 using namespace candela;
 
 namespace {
 
-ParamItem floatItem(const std::string& name, std::vector<Float> v) {
-  ParamItem i;
-  i.type = ParamType::Float;
-  i.name = name;
-  i.typeName = "float";
-  i.loc = FileLoc{"/scenes/a/scene.pbrt", 9, 5};
-  i.floats = std::move(v);
-  return i;
-}
-ParamItem rgbItem(const std::string& name, Spectrum s) {
-  ParamItem i = floatItem(name, {s[0], s[1], s[2]});
-  i.type = ParamType::Spectrum;
-  i.typeName = "rgb";
-  return i;
-}
-ParamItem stringItem(const std::string& name, const std::string& v,
-                     ParamType type = ParamType::String) {
-  ParamItem i;
-  i.type = type;
-  i.name = name;
-  i.typeName = type == ParamType::String ? "string" : "texture";
-  i.loc = FileLoc{"/scenes/a/scene.pbrt", 9, 5};
-  i.strings = {v};
-  return i;
-}
-ParamItem texItem(const std::string& name, const std::string& texture) {
-  return stringItem(name, texture, ParamType::Texture);
-}
-ParamItem intItem(const std::string& name, int v) {
-  ParamItem i;
-  i.type = ParamType::Integer;
-  i.name = name;
-  i.typeName = "integer";
-  i.ints = {v};
-  return i;
+// Relative image paths resolve against the directory of the scene file the parameter is in.
+ParamItem filename(const std::string& path) {
+  return test::strings("filename", {path}, FileLoc{"/scenes/a/scene.pbrt", 9, 5});
 }
 
 TextureDesc tex(const std::string& name, const std::string& type, const std::string& cls,
@@ -55,12 +24,6 @@ TextureDesc tex(const std::string& name, const std::string& type, const std::str
   d.loc = FileLoc{"/scenes/a/scene.pbrt", line, 1};
   for (auto& i : items) d.params.add(i);
   return d;
-}
-
-ParamSet material(std::vector<ParamItem> items) {
-  ParamSet p;
-  for (auto& i : items) p.add(i);
-  return p;
 }
 
 template <typename F>
@@ -102,24 +65,25 @@ SurfaceInteraction atUV(Float u, Float v) {
 
 TEST(TextureFactory, ConstantsAndReferences) {
   std::vector<TextureDesc> descs = {
-      tex("c", "spectrum", "constant", {rgbItem("value", Spectrum(0.1f, 0.2f, 0.3f))}),
-      tex("f", "float", "constant", {floatItem("value", {0.25f})}),
+      tex("c", "spectrum", "constant", {test::rgb("value", {0.1f, 0.2f, 0.3f})}),
+      tex("f", "float", "constant", {test::floats("value", {0.25f})}),
       tex("unused", "spectrum", "checkerboard"),
   };
   TextureFactory f(descs);
   const Texture<Spectrum>* kd =
-      f.spectrum(material({texItem("Kd", "c")}), "Kd", Spectrum(1), kMatLoc);
+      f.spectrum(test::paramSet({test::texture("Kd", "c")}), "Kd", Spectrum(1), kMatLoc);
   const Texture<Spectrum>* again =
-      f.spectrum(material({texItem("Kr", "c")}), "Kr", Spectrum(1), kMatLoc);
+      f.spectrum(test::paramSet({test::texture("Kr", "c")}), "Kr", Spectrum(1), kMatLoc);
   EXPECT_EQ(kd, again);  // created once
   EXPECT_EQ(kd->evaluate(atUV(0, 0)), Spectrum(0.1f, 0.2f, 0.3f));
-  EXPECT_EQ(f.scalar(material({texItem("sigma", "f")}), "sigma", 0, kMatLoc)->evaluate(atUV(0, 0)),
+  EXPECT_EQ(f.scalar(test::paramSet({test::texture("sigma", "f")}), "sigma", 0, kMatLoc)
+                ->evaluate(atUV(0, 0)),
             0.25f);
   EXPECT_EQ(f.texturesCreated(), 2);  // "unused" never made
   // No reference: a constant of the parameter's value, or the default.
-  EXPECT_EQ(
-      f.scalar(material({floatItem("sigma", {3})}), "sigma", 0, kMatLoc)->evaluate(atUV(0, 0)),
-      3.f);
+  EXPECT_EQ(f.scalar(test::paramSet({test::floats("sigma", {3})}), "sigma", 0, kMatLoc)
+                ->evaluate(atUV(0, 0)),
+            3.f);
   EXPECT_EQ(f.spectrum(ParamSet(), "Kd", Spectrum(0.5f), kMatLoc)->evaluate(atUV(0, 0)),
             Spectrum(0.5f));
   EXPECT_EQ(f.texturesCreated(), 2);
@@ -132,7 +96,7 @@ TEST(TextureFactory, EveryClassWithItsDefaults) {
       tex("bilerp", "float", "bilerp"),
       tex("uv", "spectrum", "uv"),
       tex("checks", "float", "checkerboard"),
-      tex("checks3", "float", "checkerboard", {intItem("dimension", 3)}),
+      tex("checks3", "float", "checkerboard", {test::ints("dimension", {3})}),
       tex("dots", "float", "dots"),
       tex("fbm", "float", "fbm"),
       tex("wrinkled", "spectrum", "wrinkled"),
@@ -142,7 +106,8 @@ TEST(TextureFactory, EveryClassWithItsDefaults) {
   };
   TextureFactory f(descs);
   auto scalar = [&](const std::string& name, Float u, Float v) {
-    return f.scalar(material({texItem("x", name)}), "x", 0, kMatLoc)->evaluate(atUV(u, v));
+    return f.scalar(test::paramSet({test::texture("x", name)}), "x", 0, kMatLoc)
+        ->evaluate(atUV(u, v));
   };
   EXPECT_EQ(scalar("scale", .3f, .3f), 1.f);
   EXPECT_EQ(scalar("mix", .3f, .3f), 0.5f);
@@ -154,7 +119,7 @@ TEST(TextureFactory, EveryClassWithItsDefaults) {
   for (const char* name : {"dots", "fbm", "windy"})
     EXPECT_TRUE(std::isfinite(scalar(name, 2.3f, 4.1f))) << name;
   auto spectrum = [&](const std::string& name, Float u, Float v) {
-    return f.spectrum(material({texItem("x", name)}), "x", Spectrum(0), kMatLoc)
+    return f.spectrum(test::paramSet({test::texture("x", name)}), "x", Spectrum(0), kMatLoc)
         ->evaluate(atUV(u, v));
   };
   EXPECT_EQ(spectrum("uv", 1.25f, 0.5f), Spectrum(0.25f, 0.5f, 0));
@@ -166,24 +131,29 @@ TEST(TextureFactory, EveryClassWithItsDefaults) {
 TEST(TextureFactory, TexturesNameEarlierTexturesOnly) {
   // "a" is redefined as twice the earlier "a": the reference inside means the definition before.
   std::vector<TextureDesc> descs = {
-      tex("a", "float", "constant", {floatItem("value", {0.25f})}, 1),
-      tex("two", "float", "constant", {floatItem("value", {2})}, 2),
-      tex("a", "float", "scale", {texItem("tex1", "a"), texItem("tex2", "two")}, 3),
-      tex("m", "float", "mix", {texItem("tex1", "a"), texItem("amount", "two")}, 4),
+      tex("a", "float", "constant", {test::floats("value", {0.25f})}, 1),
+      tex("two", "float", "constant", {test::floats("value", {2})}, 2),
+      tex("a", "float", "scale", {test::texture("tex1", "a"), test::texture("tex2", "two")}, 3),
+      tex("m", "float", "mix", {test::texture("tex1", "a"), test::texture("amount", "two")}, 4),
   };
   TextureFactory f(descs);
-  EXPECT_EQ(f.scalar(material({texItem("x", "a")}), "x", 0, kMatLoc)->evaluate(atUV(0, 0)), 0.5f);
+  EXPECT_EQ(
+      f.scalar(test::paramSet({test::texture("x", "a")}), "x", 0, kMatLoc)->evaluate(atUV(0, 0)),
+      0.5f);
   // m: (1 - 2) * a + 2 * tex2 default 1 = -0.5 + 2.
-  EXPECT_EQ(f.scalar(material({texItem("x", "m")}), "x", 0, kMatLoc)->evaluate(atUV(0, 0)), 1.5f);
+  EXPECT_EQ(
+      f.scalar(test::paramSet({test::texture("x", "m")}), "x", 0, kMatLoc)->evaluate(atUV(0, 0)),
+      1.5f);
   EXPECT_EQ(f.texturesCreated(), 4);
 
   // A texture cannot name itself or anything defined after it, so cycles cannot exist.
   std::vector<TextureDesc> cyclic = {
-      tex("p", "float", "scale", {texItem("tex1", "q")}, 1),
-      tex("q", "float", "scale", {texItem("tex1", "p")}, 2),
+      tex("p", "float", "scale", {test::texture("tex1", "q")}, 1),
+      tex("q", "float", "scale", {test::texture("tex1", "p")}, 2),
   };
   TextureFactory g(cyclic);
-  std::string e = errorOf([&] { g.scalar(material({texItem("x", "p")}), "x", 0, kMatLoc); });
+  std::string e =
+      errorOf([&] { g.scalar(test::paramSet({test::texture("x", "p")}), "x", 0, kMatLoc); });
   EXPECT_NE(e.find("no float texture named 'q' defined before this texture"), std::string::npos)
       << e;
 }
@@ -194,17 +164,18 @@ TEST(TextureFactory, Errors) {
       tex("weird", "spectrum", "plaid", {}, 7),
       tex("uvf", "float", "uv", {}, 8),
       tex("marblef", "float", "marble", {}, 9),
-      tex("cube", "float", "checkerboard", {intItem("dimension", 4)}),
-      tex("aa", "float", "checkerboard", {stringItem("aamode", "fancy")}),
-      tex("map", "float", "bilerp", {stringItem("mapping", "cubic")}),
+      tex("cube", "float", "checkerboard", {test::ints("dimension", {4})}),
+      tex("aa", "float", "checkerboard", {test::strings("aamode", {"fancy"})}),
+      tex("map", "float", "bilerp", {test::strings("mapping", {"cubic"})}),
   };
   TextureFactory f(descs);
   auto useS = [&](const std::string& name) {
-    return errorOf(
-        [&] { f.spectrum(material({texItem("Kd", name)}), "Kd", Spectrum(1), kMatLoc); });
+    return errorOf([&] {
+      f.spectrum(test::paramSet({test::texture("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
+    });
   };
   auto useF = [&](const std::string& name) {
-    return errorOf([&] { f.scalar(material({texItem("x", name)}), "x", 0, kMatLoc); });
+    return errorOf([&] { f.scalar(test::paramSet({test::texture("x", name)}), "x", 0, kMatLoc); });
   };
   std::string e = useS("weird");
   EXPECT_NE(e.find("scene.pbrt:7:1"), std::string::npos) << e;
@@ -225,10 +196,10 @@ TEST(TextureFactory, Errors) {
 
 TEST(TextureFactory, UnusedTextureParametersAreReported) {
   std::vector<TextureDesc> descs = {
-      tex("c", "float", "constant", {floatItem("value", {1}), floatItem("valeu", {2})})};
+      tex("c", "float", "constant", {test::floats("value", {1}), test::floats("valeu", {2})})};
   std::vector<std::string> warnings;
   TextureFactory f(descs, {}, [&](const FileLoc&, const std::string& m) { warnings.push_back(m); });
-  f.scalar(material({texItem("x", "c")}), "x", 0, kMatLoc);
+  f.scalar(test::paramSet({test::texture("x", "c")}), "x", 0, kMatLoc);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("\"float valeu\" of texture 'c'"), std::string::npos) << warnings[0];
 }
@@ -236,21 +207,21 @@ TEST(TextureFactory, UnusedTextureParametersAreReported) {
 TEST(TextureFactory, ImagesAreLoadedOnceAndOnlyWhenUsed) {
   FakeLoader fake;
   std::vector<TextureDesc> descs = {
-      tex("a", "spectrum", "imagemap", {stringItem("filename", "tex/wood.png")}),
+      tex("a", "spectrum", "imagemap", {filename("tex/wood.png")}),
       tex("b", "spectrum", "imagemap",
-          {stringItem("filename", "tex/../tex/wood.png"), floatItem("uscale", {4})}),
+          {filename("tex/../tex/wood.png"), test::floats("uscale", {4})}),
       tex("c", "spectrum", "imagemap",
-          {stringItem("filename", "/abs/wood.png"), stringItem("wrap", "clamp")}),
+          {filename("/abs/wood.png"), test::strings("wrap", {"clamp"})}),
       tex("clamped", "spectrum", "imagemap",
-          {stringItem("filename", "tex/wood.png"), stringItem("wrap", "clamp")}),
-      tex("grey", "float", "imagemap", {stringItem("filename", "tex/wood.png")}),
+          {filename("tex/wood.png"), test::strings("wrap", {"clamp"})}),
+      tex("grey", "float", "imagemap", {filename("tex/wood.png")}),
       tex("linear", "spectrum", "imagemap",
-          {stringItem("filename", "tex/wood.png"), stringItem("colorspace", "raw")}),
-      tex("never", "spectrum", "imagemap", {stringItem("filename", "missing.png")}),
+          {filename("tex/wood.png"), test::strings("colorspace", {"raw"})}),
+      tex("never", "spectrum", "imagemap", {filename("missing.png")}),
   };
   TextureFactory f(descs, fake.loader());
   auto use = [&](const std::string& name) {
-    return f.spectrum(material({texItem("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
+    return f.spectrum(test::paramSet({test::texture("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
   };
   const Texture<Spectrum>* a = use("a");
   const Texture<Spectrum>* b = use("b");
@@ -264,7 +235,8 @@ TEST(TextureFactory, ImagesAreLoadedOnceAndOnlyWhenUsed) {
   use("c");
   EXPECT_EQ(fake.calls.back().first, "/abs/wood.png");
   use("clamped");  // another pyramid, no new load
-  f.scalar(material({texItem("x", "grey")}), "x", 0, kMatLoc)->evaluate(atUV(0.3f, 0.3f));
+  f.scalar(test::paramSet({test::texture("x", "grey")}), "x", 0, kMatLoc)
+      ->evaluate(atUV(0.3f, 0.3f));
   EXPECT_EQ(f.mipmapsBuilt(), 4);
   EXPECT_EQ(fake.calls.size(), 2u);
   use("linear");  // another colour space: another load
@@ -279,15 +251,16 @@ TEST(TextureFactory, ImagesAreLoadedOnceAndOnlyWhenUsed) {
 TEST(TextureFactory, ImageErrorsNameThePath) {
   FakeLoader fake;
   std::vector<TextureDesc> descs = {
-      tex("gone", "spectrum", "imagemap", {stringItem("filename", "missing.png")}, 12),
+      tex("gone", "spectrum", "imagemap", {filename("missing.png")}, 12),
       tex("nofile", "spectrum", "imagemap", {}, 13),
-      tex("wrap", "spectrum", "imagemap",
-          {stringItem("filename", "x.png"), stringItem("wrap", "mirror")}, 14),
+      tex("wrap", "spectrum", "imagemap", {filename("x.png"), test::strings("wrap", {"mirror"})},
+          14),
   };
   TextureFactory f(descs, fake.loader());
   auto use = [&](const std::string& name) {
-    return errorOf(
-        [&] { f.spectrum(material({texItem("Kd", name)}), "Kd", Spectrum(1), kMatLoc); });
+    return errorOf([&] {
+      f.spectrum(test::paramSet({test::texture("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
+    });
   };
   std::string e = use("gone");
   EXPECT_NE(e.find("scene.pbrt:12:1"), std::string::npos) << e;
@@ -298,8 +271,9 @@ TEST(TextureFactory, ImageErrorsNameThePath) {
   EXPECT_EQ(fake.calls.size(), 1u);  // the parameter errors came before any reading
 
   TextureFactory noReader(descs);
-  e = errorOf(
-      [&] { noReader.spectrum(material({texItem("Kd", "gone")}), "Kd", Spectrum(1), kMatLoc); });
+  e = errorOf([&] {
+    noReader.spectrum(test::paramSet({test::texture("Kd", "gone")}), "Kd", Spectrum(1), kMatLoc);
+  });
   EXPECT_NE(e.find("no image reader"), std::string::npos) << e;
   EXPECT_NE(e.find("/scenes/a/missing.png"), std::string::npos) << e;
 }
@@ -309,21 +283,21 @@ TEST(TextureFactory, ImageScaleAndGamma) {
   fake.value = 0.25f;
   std::vector<TextureDesc> descs = {
       tex("g", "float", "imagemap",
-          {stringItem("filename", "g.exr"), floatItem("scale", {2}), floatItem("gamma", {2}),
-           stringItem("trilinear", "x")}),
+          {filename("g.exr"), test::floats("scale", {2}), test::floats("gamma", {2}),
+           test::strings("trilinear", {"x"})}),
   };
   // "trilinear" of the wrong type is an error at its own location.
   TextureFactory bad(descs, fake.loader());
   EXPECT_NE(errorOf([&] {
-              bad.scalar(material({texItem("x", "g")}), "x", 0, kMatLoc);
+              bad.scalar(test::paramSet({test::texture("x", "g")}), "x", 0, kMatLoc);
             }).find("trilinear"),
             std::string::npos);
   descs[0].params = ParamSet();
-  descs[0].params.add(stringItem("filename", "g.exr"));
-  descs[0].params.add(floatItem("scale", {2}));
-  descs[0].params.add(floatItem("gamma", {2}));
+  descs[0].params.add(filename("g.exr"));
+  descs[0].params.add(test::floats("scale", {2}));
+  descs[0].params.add(test::floats("gamma", {2}));
   TextureFactory f(descs, fake.loader());
-  EXPECT_FLOAT_EQ(
-      f.scalar(material({texItem("x", "g")}), "x", 0, kMatLoc)->evaluate(atUV(0.3f, 0.3f)),
-      0.25f);  // (2 * 0.25)^2
+  EXPECT_FLOAT_EQ(f.scalar(test::paramSet({test::texture("x", "g")}), "x", 0, kMatLoc)
+                      ->evaluate(atUV(0.3f, 0.3f)),
+                  0.25f);  // (2 * 0.25)^2
 }

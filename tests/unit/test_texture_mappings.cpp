@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/paramset.h"
+#include "support/param_items.h"
 #include "textures/mapping.h"
 #include "textures/texture_params.h"
 
@@ -116,41 +117,27 @@ TEST(TextureMapping, ThreeDimensionalTransformsPointAndDerivatives) {
   EXPECT_EQ(c.dpdy, Vector3f(0, 0, 2));
 }
 
-namespace {
-ParamItem item(const std::string& name, ParamType type, std::vector<Float> v = {},
-               std::vector<std::string> s = {}) {
-  ParamItem i;
-  i.type = type;
-  i.name = name;
-  i.typeName = paramTypeName(type);
-  i.loc = FileLoc{"m.pbrt", 4, 2};
-  i.floats = std::move(v);
-  i.strings = std::move(s);
-  return i;
-}
-}  // namespace
-
 TEST(TextureMapping, ParametersWithBothNamings) {
   SurfaceInteraction si;
   si.uv = Point2f(1, 1);
   ParamSet v2;
-  v2.add(item("uscale", ParamType::Float, {3}));
-  v2.add(item("vdelta", ParamType::Float, {0.5f}));
+  v2.add(test::floats("uscale", {3}));
+  v2.add(test::floats("vdelta", {0.5f}));
   Point2f a = createMapping2D(v2, Transform(), FileLoc{})->map(si).st;
   EXPECT_EQ(a, Point2f(3, 1.5f));
   ParamSet lrt;
-  lrt.add(item("su", ParamType::Float, {3}));
-  lrt.add(item("dv", ParamType::Float, {0.5f}));
+  lrt.add(test::floats("su", {3}));
+  lrt.add(test::floats("dv", {0.5f}));
   EXPECT_EQ(createMapping2D(lrt, Transform(), FileLoc{})->map(si).st, Point2f(3, 1.5f));
 
   ParamSet planar;
-  planar.add(item("mapping", ParamType::String, {}, {"planar"}));
-  planar.add(item("v1", ParamType::Vector3, {0, 1, 0}));
+  planar.add(test::strings("mapping", {"planar"}));
+  planar.add(test::vectors("v1", {0, 1, 0}));
   si.p = Point3f(5, 7, 9);
   EXPECT_EQ(createMapping2D(planar, Transform(), FileLoc{})->map(si).st, Point2f(7, 7));
 
   ParamSet bad;
-  bad.add(item("mapping", ParamType::String, {}, {"cubic"}));
+  bad.add(test::strings("mapping", {"cubic"}, FileLoc{"m.pbrt", 4, 2}));
   try {
     createMapping2D(bad, Transform(), FileLoc{});
     FAIL();

@@ -8,6 +8,7 @@
 
 #include "core/rng.h"
 #include "shapes/triangle_mesh.h"
+#include "support/param_items.h"
 
 namespace candela {
 namespace {
@@ -206,21 +207,13 @@ TEST(TriangleShape, WatertightAlongSharedEdges) {
   EXPECT_EQ(misses, 0);
 }
 
-ParamItem item(ParamType type, const std::string& name, std::vector<Float> floats,
-               std::vector<int> ints = {}, int line = 1) {
-  ParamItem it;
-  it.type = type;
-  it.name = name;
-  it.loc = FileLoc{"mesh.pbrt", line, 1};
-  it.floats = std::move(floats);
-  it.ints = std::move(ints);
-  return it;
-}
+// Each parameter on its own line, so that an error's line tells which one it is about.
+FileLoc meshLine(int line) { return FileLoc{"mesh.pbrt", line, 1}; }
 
 ParamSet quadParams() {
   ParamSet ps;
-  ps.add(item(ParamType::Integer, "indices", {}, {0, 1, 2, 0, 2, 3}, 2));
-  ps.add(item(ParamType::Point3, "P", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, {}, 3));
+  ps.add(test::ints("indices", {0, 1, 2, 0, 2, 3}, meshLine(2)));
+  ps.add(test::points("P", {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, meshLine(3)));
   return ps;
 }
 
@@ -238,7 +231,7 @@ void expectError(const ParamSet& ps, int line, const std::string& name) {
 
 TEST(TriangleShape, MeshFactory) {
   ParamSet ps = quadParams();
-  ps.add(item(ParamType::Float, "st", {0, 0, 1, 0, 1, 1, 0, 1}, {}, 4));
+  ps.add(test::floats("st", {0, 0, 1, 0, 1, 1, 0, 1}, meshLine(4)));
   std::unique_ptr<TriangleMesh> mesh;
   auto shapes = createTriangleMeshShapes(translate(Vector3f(0, 0, 2)), false, ps, &mesh, FileLoc{});
   ASSERT_EQ(shapes.size(), 2u);
@@ -252,26 +245,26 @@ TEST(TriangleShape, MeshFactory) {
   ps.forEachUnused([](const ParamItem& it) { ADD_FAILURE() << it.name << " unused"; });
 
   ParamSet bad = quadParams();
-  bad.add(item(ParamType::Integer, "indices", {}, {0, 1, 2, 0}, 5));
+  bad.add(test::ints("indices", {0, 1, 2, 0}, meshLine(5)));
   expectError(bad, 5, "indices");
   bad = quadParams();
-  bad.add(item(ParamType::Integer, "indices", {}, {0, 1, 2, 0, 2, 4}, 6));
+  bad.add(test::ints("indices", {0, 1, 2, 0, 2, 4}, meshLine(6)));
   expectError(bad, 6, "indices");
   bad = quadParams();
-  bad.add(item(ParamType::Normal3, "N", {0, 0, 1, 0, 0, 1, 0, 0, 1}, {}, 7));
+  bad.add(test::normals("N", {0, 0, 1, 0, 0, 1, 0, 0, 1}, meshLine(7)));
   expectError(bad, 7, "N");
   bad = quadParams();
-  bad.add(item(ParamType::Vector3, "S", {1, 0, 0}, {}, 8));
+  bad.add(test::vectors("S", {1, 0, 0}, meshLine(8)));
   expectError(bad, 8, "S");
   bad = quadParams();
-  bad.add(item(ParamType::Point2, "uv", {0, 0, 1, 0}, {}, 9));
+  bad.add(test::point2s("uv", {0, 0, 1, 0}, meshLine(9)));
   expectError(bad, 9, "uv");
   ParamSet noP;
-  noP.add(item(ParamType::Integer, "indices", {}, {0, 1, 2}, 10));
+  noP.add(test::ints("indices", {0, 1, 2}, meshLine(10)));
   expectError(noP, 99, "P");
   // A single triangle may omit its indices.
   ParamSet one;
-  one.add(item(ParamType::Point3, "P", {0, 0, 0, 1, 0, 0, 0, 1, 0}));
+  one.add(test::points("P", {0, 0, 0, 1, 0, 0, 0, 1, 0}));
   EXPECT_EQ(createTriangleMeshShapes(Transform(), false, one, &mesh, FileLoc{}).size(), 1u);
 }
 
@@ -286,12 +279,8 @@ TEST(TriangleShape, PlyMeshFactory) {
          "end_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
   }
   ParamSet ps;
-  ParamItem fn;
-  fn.type = ParamType::String;
-  fn.name = "filename";
-  fn.loc = FileLoc{"scene.pbrt", 12, 5};
-  fn.strings = {"sub/quad.ply"};
-  ps.add(fn);
+  const FileLoc filenameLoc{"scene.pbrt", 12, 5};
+  ps.add(test::strings("filename", {"sub/quad.ply"}, filenameLoc));
   std::unique_ptr<TriangleMesh> mesh;
   auto shapes = createPlyMeshShapes(Transform(), false, ps, &mesh, FileLoc{}, dir.string());
   EXPECT_EQ(shapes.size(), 2u);
@@ -299,8 +288,7 @@ TEST(TriangleShape, PlyMeshFactory) {
   for (const auto& s : shapes) area += s->area();
   EXPECT_NEAR(area, 1, 1e-6);
 
-  fn.strings = {"sub/missing.ply"};
-  ps.add(fn);
+  ps.add(test::strings("filename", {"sub/missing.ply"}, filenameLoc));
   try {
     createPlyMeshShapes(Transform(), false, ps, &mesh, FileLoc{}, dir.string());
     ADD_FAILURE() << "expected a SceneError";

@@ -8,6 +8,7 @@
 #include "scene/shape_factory.h"
 #include "scene/texture_factory.h"
 #include "shapes/triangle_mesh.h"
+#include "support/param_items.h"
 #include "support/test_device.h"
 
 namespace candela {
@@ -95,35 +96,9 @@ ShapeDesc meshDesc() {
   ShapeDesc d;
   d.name = "trianglemesh";
   d.loc = FileLoc{"alpha.pbrt", 2, 1};
-  ParamItem idx;
-  idx.type = ParamType::Integer;
-  idx.name = "indices";
-  idx.typeName = "integer";
-  idx.ints = {0, 1, 2};
-  d.params.add(idx);
-  ParamItem p;
-  p.type = ParamType::Point3;
-  p.name = "P";
-  p.typeName = "point3";
-  p.floats = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-  d.params.add(p);
+  d.params.add(test::ints("indices", {0, 1, 2}));
+  d.params.add(test::points("P", {0, 0, 0, 1, 0, 0, 0, 1, 0}));
   return d;
-}
-ParamItem floatItem(const std::string& name, Float v) {
-  ParamItem item;
-  item.type = ParamType::Float;
-  item.name = name;
-  item.typeName = "float";
-  item.floats = {v};
-  return item;
-}
-ParamItem textureItem(const std::string& name, const std::string& tex) {
-  ParamItem item;
-  item.type = ParamType::Texture;
-  item.name = name;
-  item.typeName = "texture";
-  item.strings = {tex};
-  return item;
 }
 
 TEST(TriangleAlpha, FactoryReadsAlphaAndShadowAlpha) {
@@ -131,7 +106,7 @@ TEST(TriangleAlpha, FactoryReadsAlphaAndShadowAlpha) {
   zero.name = "constant";
   zero.textureName = "zero";
   zero.type = "float";
-  zero.params.add(floatItem("value", 0));
+  zero.params.add(test::floats("value", {0}));
   std::vector<TextureDesc> descs = {zero};
   TextureFactory textures(descs);
   SurfaceInteraction si;
@@ -139,7 +114,7 @@ TEST(TriangleAlpha, FactoryReadsAlphaAndShadowAlpha) {
   // Opaque: no alpha, or alpha 1, needs no test.
   EXPECT_EQ(createShapes(meshDesc(), Transform(), textures).mesh->alpha, nullptr);
   ShapeDesc one = meshDesc();
-  one.params.add(floatItem("alpha", 1));
+  one.params.add(test::floats("alpha", {1}));
   CreatedShapes c1 = createShapes(one, Transform(), textures);
   EXPECT_EQ(c1.mesh->alpha, nullptr);
   EXPECT_EQ(c1.mesh->shadowAlpha, nullptr);
@@ -147,7 +122,7 @@ TEST(TriangleAlpha, FactoryReadsAlphaAndShadowAlpha) {
 
   // alpha 0: cut everywhere; shadowalpha defaults to it.
   ShapeDesc cut = meshDesc();
-  cut.params.add(floatItem("alpha", 0));
+  cut.params.add(test::floats("alpha", {0}));
   CreatedShapes c2 = createShapes(cut, Transform(), textures);
   ASSERT_NE(c2.mesh->alpha, nullptr);
   EXPECT_EQ(c2.mesh->alpha->evaluate(si), 0);
@@ -159,8 +134,8 @@ TEST(TriangleAlpha, FactoryReadsAlphaAndShadowAlpha) {
 
   // A named texture for alpha, and shadowalpha 1: visible to no camera ray, but casts shadows.
   ShapeDesc named = meshDesc();
-  named.params.add(textureItem("alpha", "zero"));
-  named.params.add(floatItem("shadowalpha", 1));
+  named.params.add(test::texture("alpha", "zero"));
+  named.params.add(test::floats("shadowalpha", {1}));
   CreatedShapes c3 = createShapes(named, Transform(), textures);
   ASSERT_NE(c3.mesh->alpha, nullptr);
   EXPECT_EQ(c3.mesh->shadowAlpha, nullptr);
@@ -169,7 +144,7 @@ TEST(TriangleAlpha, FactoryReadsAlphaAndShadowAlpha) {
 
   // An unknown texture name is an error at the parameter.
   ShapeDesc bad = meshDesc();
-  bad.params.add(textureItem("alpha", "nosuch"));
+  bad.params.add(test::texture("alpha", "nosuch"));
   EXPECT_THROW(createShapes(bad, Transform(), textures), SceneError);
 }
 
