@@ -34,7 +34,7 @@ Spectrum AmbientOcclusionIntegrator::Li(const RayDifferential& ray, const Scene&
   for (int i = 0; i < nSamples_; ++i) {
     Point2f u(bitsToUnitFloat(vanDerCorputBits(uint32_t(i), scrambleX)),
               bitsToUnitFloat(sobol2Bits(uint32_t(i), scrambleY)));
-    Vector3f local = sampleCosineHemisphere(u);
+    Vector3f local = cosSample_ ? sampleCosineHemisphere(u) : sampleUniformHemisphere(u);
     Vector3f w = s * local.x + t * local.y + n * local.z;
     Ray probe = isect.spawnRay(w);
     probe.tMax = maxDist_;

@@ -44,7 +44,9 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
     if (nSamples < 1) throw SceneError(p.locationOf("nsamples", desc.loc), "nsamples must be >= 1");
     Float maxDist = p.getOneFloat("maxdist", kInfinity);
     if (!(maxDist > 0)) throw SceneError(p.locationOf("maxdist", desc.loc), "maxdist must be > 0");
-    return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist);
+    // pbrt-v3's switch: cosine-weighted directions (default) or pbrt-v2's uniform ones.
+    bool cosSample = p.getOneBool("cossample", true);
+    return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist, cosSample);
   }
   throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
                      {"ambientocclusion", "directlighting", "path", "whitted"});

@@ -357,6 +357,20 @@ TEST(AmbientOcclusion, MaxDistCutsTheProbes) {
   recordError("endless_wall_absolute_error", std::abs(half - 0.5));
 }
 
+// pbrt-v2's uniform directions ("bool cossample" false): an endless wall at distance h within
+// maxdist blocks the directions with w_x > c = h / maxdist, a cap of the sphere whose upper half
+// is (1 - c) / 2 of the hemisphere, so (1 + c) / 2 stay clear (0.75 at c = 0.5, where the
+// cosine-weighted value is 0.8045).
+TEST(AmbientOcclusion, UniformDirectionsArePbrtV2s) {
+  const int nSamples = 4096, pixelSamples = 16;
+  const double n = double(nSamples) * pixelSamples, c = 0.5, expected = (1 + c) / 2;
+  double got = aoInFrontOfWall(1, 1e5f, nSamples, pixelSamples,
+                               "\"float maxdist\" [2] \"bool cossample\" \"false\"");
+  EXPECT_NEAR(got, expected, 4 * binomialSigma(expected, n));
+  double half = aoInFrontOfWall(1, 1e5f, nSamples, pixelSamples, "\"bool cossample\" \"false\"");
+  EXPECT_NEAR(half, 0.5, 4 * binomialSigma(0.5, n));
+}
+
 TEST(AmbientOcclusion, ClosedBoxAroundTheCameraIsBlack) {
   std::string header = aoHeader("0 0 0  0 0 1  0 1 0", "\"perspective\" \"float fov\" [90]", 8, 2);
   std::string cube =
