@@ -1,5 +1,6 @@
 #include "shapes/loop_subdiv_shape.h"
 
+#include <cstdint>
 #include <string>
 
 #include "shapes/opensubdiv_loop.h"
@@ -27,6 +28,18 @@ std::vector<std::unique_ptr<Shape>> createLoopSubdivShapes(
   control.indices = params.getIntArray("indices");
   if (control.p.empty()) err("P", "missing \"point3 P\"");
   if (control.indices.empty()) err("indices", "missing \"integer indices\"");
+  // Refinement keeps about 200 bytes per final face (the benchmark's peak heap): past this many
+  // faces (13 GB) a scene would exhaust memory rather than fail clearly.
+  constexpr int64_t kMaxRefinedFaces = int64_t(1) << 26;
+  int64_t refinedFaces = int64_t(control.indices.size() / 3) << (2 * levels);
+  if (refinedFaces > kMaxRefinedFaces)
+    err("nlevels", std::string("\"nlevels\" ")
+                       .append(std::to_string(levels))
+                       .append(" would make ")
+                       .append(std::to_string(refinedFaces))
+                       .append(" triangles; at most ")
+                       .append(std::to_string(kMaxRefinedFaces))
+                       .append(" are allowed"));
   const char* uvName = params.find("uv") ? "uv" : "st";
   std::vector<Point2f> uv = params.getPoint2fArray(uvName);
   std::vector<Normal3f> n = params.getNormal3fArray("N");

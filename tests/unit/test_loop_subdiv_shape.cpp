@@ -84,5 +84,27 @@ TEST(LoopSubdivShape, RegisteredAndErrorsNameTheFace) {
   }
 }
 
+TEST(LoopSubdivShape, RefusesMoreTrianglesThanMemoryHolds) {
+  // 1100 faces at 8 levels would be 72 million triangles (about 14 GB): a clear error at
+  // "nlevels", before any refinement or even validation.
+  ParamSet ps;
+  ps.add(test::points("P", {0, 0, 0, 1, 0, 0, 0, 1, 0}));
+  std::vector<int> indices;
+  for (int f = 0; f < 1100; ++f)
+    for (int v : {0, 1, 2}) indices.push_back(v);
+  ps.add(test::ints("indices", indices));
+  ps.add(test::ints("nlevels", {8}, FileLoc{"big.pbrt", 3, 5}));
+  std::unique_ptr<TriangleMesh> mesh;
+  try {
+    createLoopSubdivShapes(Transform(), false, ps, &mesh, {});
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("big.pbrt:3:5: error: loopsubdiv: \"nlevels\" 8 would "
+                                         "make 72089600 triangles"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace candela
