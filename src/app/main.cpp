@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 scene or render error, 2 usage error.
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <string>
 
 #include "accel/embree/embree_device.h"
@@ -138,6 +139,11 @@ int main(int argc, char** argv) {
                    "candela: error: the scene has no WorldBegin/WorldEnd: nothing to render\n");
       return 1;
     }
+  } catch (const std::bad_alloc&) {
+    // The scene asked for more than the machine has (the factories refuse the sizes they can
+    // foresee: films, subdivision levels).
+    std::fprintf(stderr, "candela: error: out of memory\n");
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;

@@ -22,14 +22,19 @@ Film::Film(const Point2i& fullResolution, const Bounds2f& cropWindow,
       filter_(std::move(filter)),
       filename_(std::move(filename)) {
   assert(filter_);
+  pixelBounds_ = pixelBoundsOf(fullResolution, cropWindow);
+  pixels_.resize(size_t(pixelBounds_.area()));
+}
+
+Bounds2i Film::pixelBoundsOf(const Point2i& fullResolution, const Bounds2f& cropWindow) {
+  Bounds2f crop = normalizedCrop(cropWindow);
   // The same ceil rule at both ends (lrt draft §8.1), so crop windows sharing an edge share the
   // pixel column or row there exactly once: a set of tiling crops renders every pixel once.
-  Point2i pMin(int(std::ceil(Float(fullResolution.x) * cropWindow_.pMin.x)),
-               int(std::ceil(Float(fullResolution.y) * cropWindow_.pMin.y)));
-  Point2i pMax(int(std::ceil(Float(fullResolution.x) * cropWindow_.pMax.x)),
-               int(std::ceil(Float(fullResolution.y) * cropWindow_.pMax.y)));
-  pixelBounds_ = Bounds2i(pMin, pMax);
-  pixels_.resize(size_t(pixelBounds_.area()));
+  Point2i pMin(int(std::ceil(Float(fullResolution.x) * crop.pMin.x)),
+               int(std::ceil(Float(fullResolution.y) * crop.pMin.y)));
+  Point2i pMax(int(std::ceil(Float(fullResolution.x) * crop.pMax.x)),
+               int(std::ceil(Float(fullResolution.y) * crop.pMax.y)));
+  return Bounds2i(pMin, pMax);
 }
 
 size_t Film::offset(const Point2i& p) const {

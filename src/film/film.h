@@ -22,6 +22,8 @@ class Film {
   // corners ordered first; a window that covers no pixel leaves pixelBounds() empty.
   Film(const Point2i& fullResolution, const Bounds2f& cropWindow, std::unique_ptr<Filter> filter,
        std::string filename);
+  // The pixel bounds a film of this resolution and crop window has, without making it.
+  static Bounds2i pixelBoundsOf(const Point2i& fullResolution, const Bounds2f& cropWindow);
   const Point2i& fullResolution() const { return fullResolution_; }
   const Bounds2i& pixelBounds() const { return pixelBounds_; }
   const Filter& filter() const { return *filter_; }

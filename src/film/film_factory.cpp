@@ -1,7 +1,9 @@
 // Film "image" -> Film, with pbrt-v2's parameter names and defaults (lrt draft App. C). The
 // display-pipeline parameters of the draft's ImageFilm (gamma, tone mapping, bloom, ...) belong
 // to output and are not read here.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "film/film.h"
 
@@ -46,6 +48,21 @@ std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params
     throw SceneError(cropLoc, "crop window has a NaN value");
   std::string filename = params.getOneString("filename", "candela.exr");
   if (filename.empty()) throw SceneError(params.locationOf("filename", loc), "empty filename");
+  // The film keeps about 112 bytes per pixel (sums in double for the mean and the variance): past
+  // 2^27 pixels (15 GB) a render would exhaust memory rather than fail clearly.
+  constexpr int64_t kMaxPixels = int64_t(1) << 27;
+  Bounds2i bounds = Film::pixelBoundsOf(res, crop);
+  int64_t pixels = int64_t(std::max(0, bounds.pMax.x - bounds.pMin.x)) *
+                   std::max(0, bounds.pMax.y - bounds.pMin.y);
+  if (pixels > kMaxPixels)
+    throw SceneError(loc, std::string("film: ")
+                              .append(std::to_string(pixels))
+                              .append(" pixels to render (")
+                              .append(std::to_string(res.x))
+                              .append("x")
+                              .append(std::to_string(res.y))
+                              .append(" in the crop window); at most 2^27 = ")
+                              .append(std::to_string(kMaxPixels)));
   auto film = std::make_unique<Film>(res, crop, std::move(filter), filename);
   if (film->pixelBounds().empty())
     throw SceneError(cropLoc, "crop window [" + std::to_string(crop.pMin.x) + " " +

@@ -26,6 +26,10 @@ expect unknown-shape 1 "unknown.pbrt:4:[0-9]+: .*unknown shape 'teapot' \\(known
 printf '%s\nShape "sphere" "float radius" ["big"]\nWorldEnd\n' "$header" > badvalue.pbrt
 expect bad-value 1 'badvalue.pbrt:4:[0-9]+' -- badvalue.pbrt -o out.exr
 
+# Sizes the machine cannot hold are refused up front, at the statement.
+printf 'Film "image" "integer xresolution" [200000] "integer yresolution" [200000]\nWorldBegin\nShape "sphere"\nWorldEnd\n' > hugefilm.pbrt
+expect huge-film 1 'hugefilm.pbrt:1:1: error: film: 40000000000 pixels to render' -- hugefilm.pbrt -o out.exr
+
 printf 'WorldBegin\nAttributeEnd\nWorldEnd\n' > unmatched.pbrt
 expect unmatched-end 1 'unmatched.pbrt:2:1' -- unmatched.pbrt -o out.exr
 
