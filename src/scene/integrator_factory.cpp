@@ -11,10 +11,21 @@ namespace {
 
 // "maxdepth" is read only by the integrators that have it, so that anywhere else it is reported
 // as unused.
-int maxDepthParam(const PluginDesc& desc) {
+// recursive: the integrator recurses once per level (whitted, directlighting), on a worker
+// thread's stack, which two facing mirrors overflow somewhere past 10,000 levels.
+int maxDepthParam(const PluginDesc& desc, bool recursive) {
   const ParamSet& p = desc.params;
   int maxDepth = p.getOneInt("maxdepth", 5);
   if (maxDepth < 0) throw SceneError(p.locationOf("maxdepth", desc.loc), "maxdepth must be >= 0");
+  constexpr int kMaxRecursion = 1000;
+  if (recursive && maxDepth > kMaxRecursion)
+    throw SceneError(p.locationOf("maxdepth", desc.loc),
+                     std::string("maxdepth must be at most ")
+                         .append(std::to_string(kMaxRecursion))
+                         .append(" for '")
+                         .append(desc.name)
+                         .append("', which recurses once per level; got ")
+                         .append(std::to_string(maxDepth)));
   return maxDepth;
 }
 
@@ -23,7 +34,7 @@ int maxDepthParam(const PluginDesc& desc) {
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc) {
   const ParamSet& p = desc.params;
   if (desc.name == "directlighting") {
-    int maxDepth = maxDepthParam(desc);
+    int maxDepth = maxDepthParam(desc, true);
     std::string strategy = p.getOneString("strategy", "all");
     DirectLightingIntegrator::Strategy s;
     if (strategy == "all")
@@ -36,8 +47,8 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
           std::string("unknown strategy '").append(strategy).append("' (known: all, one)"));
     return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
   }
-  if (desc.name == "path") return std::make_unique<PathIntegrator>(maxDepthParam(desc));
-  if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc));
+  if (desc.name == "path") return std::make_unique<PathIntegrator>(maxDepthParam(desc, false));
+  if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
   if (desc.name == "ambientocclusion") {
     // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
     int nSamples = p.getOneInt("nsamples", 2048);
