@@ -104,7 +104,25 @@ const Texture<T>* TextureFactory::named(size_t index) {
   Store<T>& s = store<T>();
   if (auto it = s.byIndex.find(index); it != s.byIndex.end()) return it->second;
   const TextureDesc& d = descs_[index];
-  s.owned.push_back(create<T>(d, index));
+  // Creating and evaluating a texture recurse through the textures it names: a chain deeper than
+  // this would overflow a thread's stack (100,000 nested "scale" textures did).
+  constexpr int kMaxNesting = 500;
+  if (nesting_ >= kMaxNesting)
+    throw SceneError(d.loc, std::string("texture '")
+                                .append(d.textureName)
+                                .append("' is nested more than ")
+                                .append(std::to_string(kMaxNesting))
+                                .append(" textures deep"));
+  ++nesting_;
+  std::unique_ptr<Texture<T>> made;
+  try {
+    made = create<T>(d, index);
+  } catch (...) {
+    --nesting_;
+    throw;
+  }
+  --nesting_;
+  s.owned.push_back(std::move(made));
   ++created_;
   if (warn_)
     d.params.forEachUnused([&](const ParamItem& item) {

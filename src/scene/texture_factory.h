@@ -94,6 +94,7 @@ class TextureFactory {
   Store<Float> floats_;
   std::map<std::pair<std::string, std::string>, ImageBuffer> images_;
   int created_ = 0, imagesLoaded_ = 0, mipmapsBuilt_ = 0;
+  int nesting_ = 0;  // textures being created, each inside the one before (see named())
 };
 
 }  // namespace candela
