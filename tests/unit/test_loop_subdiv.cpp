@@ -183,6 +183,28 @@ TEST(LoopSubdiv, BadTopologyNamesTheFace) {
   EXPECT_NE(errorOf(m).find("face 1 "), std::string::npos) << errorOf(m);
   m.indices.pop_back();
   EXPECT_NE(errorOf(m).find("3 per triangle, found 5"), std::string::npos);
+  // Two faces back to back: every edge has two faces and is wound both ways, but the refined mesh
+  // would not be a manifold (it used to fail only at level 1, naming a refined face).
+  m = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2, 0, 2, 1}};
+  EXPECT_EQ(errorOf(m),
+            "scene.lrt:7:3: error: loopsubdiv: face 0 and face 1 are the only faces "
+            "around vertex 0 and lie back to back (an inner vertex needs three faces)");
+}
+
+// A fan of 200,000 faces around vertex 0. Lookups scan the edges kept at the end with fewer faces;
+// when vertex 0, the smallest index, kept them all, this took about 10 s (50 ms now; timed by hand,
+// not asserted).
+TEST(LoopSubdiv, HighValenceFan) {
+  const int n = 200000;
+  LoopMesh m;
+  m.p.emplace_back(0, 0, 0);
+  for (int k = 0; k <= n; ++k) m.p.emplace_back(std::cos(k * 1e-5), std::sin(k * 1e-5), 0);
+  for (int k = 1; k <= n; ++k)
+    for (int v : {0, k, k + 1}) m.indices.push_back(v);
+  LoopTopology t = buildLoopTopology(m, {}, "fan");
+  EXPECT_EQ(t.ring(0).size(), size_t(n + 1));
+  EXPECT_TRUE(t.boundary[0]);
+  EXPECT_EQ(t.edges.size(), size_t(2 * n + 1));
 }
 
 }  // namespace
