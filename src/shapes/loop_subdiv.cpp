@@ -1,6 +1,7 @@
 #include "shapes/loop_subdiv.h"
 
 #include <cmath>
+#include <deque>
 #include <numbers>
 
 namespace candela {
@@ -52,7 +53,7 @@ class ValenceWeights {
 
  private:
   LoopRules::Beta beta_;
-  std::vector<Weights> table_;
+  std::deque<Weights> table_;  // growing it keeps references to the entries made before
 };
 
 }  // namespace

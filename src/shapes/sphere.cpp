@@ -149,9 +149,9 @@ Float SphereShape::pdf(const Interaction& ref, const Vector3f& wi) const {
 std::unique_ptr<Shape> createSphereShape(const Transform& objectToWorld, bool reverseOrientation,
                                          const ParamSet& params) {
   Float radius = quadricFloat(params, "sphere", "radius", 1, true);
-  // zmin and zmax are clamped to the radius, not checked.
-  Float zMin = params.getOneFloat("zmin", -radius);
-  Float zMax = params.getOneFloat("zmax", radius);
+  // zmin and zmax must be finite, and are then clamped to the radius.
+  Float zMin = quadricFloat(params, "sphere", "zmin", -radius, false);
+  Float zMax = quadricFloat(params, "sphere", "zmax", radius, false);
   return std::make_unique<SphereShape>(objectToWorld, reverseOrientation, radius, zMin, zMax,
                                        quadricPhiMax(params));
 }

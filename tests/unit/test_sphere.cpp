@@ -289,6 +289,17 @@ TEST(SphereShape, Factory) {
     EXPECT_EQ(e.location().line, 7);
     EXPECT_NE(std::string(e.what()).find("radius"), std::string::npos);
   }
+  // A NaN zmin would make a sphere nothing ever hits, silently.
+  ParamSet nanZ;
+  nanZ.add(
+      test::floats("zmin", {std::numeric_limits<Float>::quiet_NaN()}, FileLoc{"s.pbrt", 9, 1}));
+  try {
+    createSphereShape(Transform(), false, nanZ);
+    FAIL() << "expected a SceneError";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.location().line, 9);
+    EXPECT_NE(std::string(e.what()).find("zmin"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
