@@ -134,7 +134,7 @@ Interaction SphereShape::sample(const Interaction& ref, const Point2f& u, Float*
 Float SphereShape::pdf(const Interaction& ref, const Vector3f& wi) const {
   if (!usesConeSampling() || refInside(ref)) return Shape::pdf(ref, wi);
   // Zero for directions that miss the sphere: the line must pass within the radius of the
-  // centre, ahead of ref (the cross product is in double precision).
+  // centre, ahead of ref.
   Vector3f toCenter = worldCenter_ - ref.p;
   Float wiLen2 = wi.lengthSquared();
   if (!(wiLen2 > 0) || dot(toCenter, wi) <= 0) return 0;
