@@ -16,7 +16,7 @@ Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Li
   VisibilityTester vis;
   Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
   if (lightPdf > 0 && !li.isBlack()) {
-    Spectrum f = bsdf.f(it.wo, wi, nonSpecular) * absDot(wi, it.shading.n);
+    Spectrum f = bsdf.f(it.wo, wi, nonSpecular) * absDot(wi, bsdf.shadingNormal());
     if (!f.isBlack() && scene.unoccluded(vis, stats)) {
       if (light.isDelta()) {
         ld += f * li / lightPdf;
@@ -31,7 +31,7 @@ Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Li
     BxDFType sampledType;
     Spectrum f = bsdf.sampleF(it.wo, &wi, uComponent, uScattering, &scatteringPdf, nonSpecular,
                               &sampledType);
-    f *= absDot(wi, it.shading.n);
+    f *= absDot(wi, bsdf.shadingNormal());
     if (!f.isBlack() && scatteringPdf > 0) {
       lightPdf = light.pdfLi(it, wi);
       if (lightPdf == 0) return ld;

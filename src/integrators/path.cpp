@@ -42,7 +42,7 @@ Spectrum PathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene
     Spectrum f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf,
                                kAllBxDF, &sampledType);
     if (f.isBlack() || pdf == 0) break;
-    beta *= f * (absDot(wi, isect.shading.n) / pdf);
+    beta *= f * (absDot(wi, bsdf->shadingNormal()) / pdf);
     specularBounce = (sampledType & kSpecular) != 0;
     ray = RayDifferential(isect.spawnRay(wi));
 

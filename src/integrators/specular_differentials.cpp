@@ -36,9 +36,10 @@ RayDifferential spawnSpecularRay(const SurfaceInteraction& isect, const BSDF& bs
                                  bool transmission) {
   RayDifferential ray(isect.spawnRay(wi));
   // A refracted ray along the tangent plane has no defined derivative (|wi.n| divides below).
-  if (!incoming.hasDifferentials || dot(wi, isect.shading.n) == 0) return ray;
+  if (!incoming.hasDifferentials || dot(wi, bsdf.shadingNormal()) == 0) return ray;
   const Vector3f& wo = isect.wo;
-  Vector3f n(isect.shading.n);
+  // The bumped normal when the material bump-maps; its derivatives are the surface's.
+  Vector3f n(bsdf.shadingNormal());
   Vector3f dndx = normalDerivative(isect, isect.dudx, isect.dvdx);
   Vector3f dndy = normalDerivative(isect, isect.dudy, isect.dvdy);
   // The offset rays' wo, as differences from the main ray's.

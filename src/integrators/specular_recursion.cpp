@@ -41,7 +41,7 @@ Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Sc
       Float pdf;
       Spectrum f =
           bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf, flags);
-      Float cosTerm = absDot(wi, isect.shading.n);
+      Float cosTerm = absDot(wi, bsdf->shadingNormal());
       if (pdf > 0 && !f.isBlack() && cosTerm != 0) {
         Float a;
         RayDifferential next = spawnSpecularRay(isect, *bsdf, ray, wi, transmission);

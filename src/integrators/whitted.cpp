@@ -14,7 +14,7 @@ Spectrum WhittedIntegrator::directLight(const SurfaceInteraction& isect, const B
     Spectrum f = bsdf.f(isect.wo, wi);
     // The shadow ray last: it is the expensive test.
     if (!f.isBlack() && scene.unoccluded(vis, ctx.stats))
-      l += f * li * (absDot(wi, isect.shading.n) / pdf);
+      l += f * li * (absDot(wi, bsdf.shadingNormal()) / pdf);
   }
   return l;
 }

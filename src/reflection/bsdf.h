@@ -39,6 +39,9 @@ class BSDF {
   Spectrum rho(std::span<const Point2f> u1, std::span<const Point2f> u2,
                int flags = kAllBxDF) const;
   const Normal3f& geometricNormal() const { return ng_; }
+  // The normal of the shading frame: the bumped one when the material bump-maps, which is the
+  // normal the cosine of the rendering equation is taken against (pbrt 2e's dgShading.nn).
+  Normal3f shadingNormal() const { return Normal3f(ns_); }
   const Float eta;
 
  private:
