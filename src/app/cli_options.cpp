@@ -36,7 +36,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   app.add_flag("-q,--quiet", o->quiet, "No progress or statistics output");
   app.add_flag("-v,--verbose", o->verbose, "More detail");
   app.add_flag("--stats", o->stats, "Print what the scene built (geometry, Embree, lights...)");
-  app.add_flag("--half", o->half, "Write half-float EXR channels (Z stays float)");
+  app.add_flag("--half", o->half, "Write half-float EXR channels (Z, P and samples stay float)");
   app.add_option("--aov", o->aovs,
                  "Extra EXR layers: albedo,normal,depth,position,variance,samples");
   app.add_option("--compression", o->compression, "EXR compression: zip, piz, dwaa, none")

@@ -9,7 +9,10 @@ namespace candela {
 struct FileLoc {
   std::string file;  // "-" for standard input
   int line = 1, column = 1;
+  // "file:line:col"; just the name when there is no line: the end of a file, or a command-line
+  // option ("--spp").
   std::string str() const {
+    if (line == 0) return file;
     return file + ":" + std::to_string(line) + ":" + std::to_string(column);
   }
 };

@@ -1,9 +1,11 @@
 // "ambientocclusion" (pbrt-v2's AmbientOcclusionIntegrator): at the first surface a camera ray
 // hits, the fraction of directions over the hemisphere on the viewer's side whose rays travel
-// maxdist without hitting anything. Grey, in [0, 1]; rays that escape give 0. The directions are
-// cosine-weighted by default (pbrt-v3's "cossample" true: the visibility-weighted irradiance
-// fraction, the usual definition); with cosSample false they are uniform over the hemisphere,
-// which is what pbrt-v2 computes. The two agree on open and closed surroundings only.
+// maxdist without hitting anything. Grey, in [0, 1]; rays that escape give 0. By default the
+// directions are cosine-weighted: the visibility-weighted irradiance fraction, the usual
+// definition (pbrt-v3's integrator estimates the same integral unnormalised, in [0, pi]). With
+// cosSample false ("bool cossample" false) they are uniform over the hemisphere: pbrt-v2's value.
+// The two agree on open and closed surroundings only. (In pbrt-v3, cossample changes only the
+// sampling, not the value.)
 #pragma once
 
 #include "integrators/integrator.h"

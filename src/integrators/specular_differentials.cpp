@@ -18,7 +18,8 @@ Vector3f reflectedOffset(const Vector3f& wo, const Vector3f& wi, const Vector3f&
 }
 
 // Refracted direction wi = -eta wo + mu n with mu = eta (wo.n) - |wi.n|, n on wo's side and eta
-// the ratio of wo's index to wi's. From |wi.n|^2 = 1 - eta^2 + eta^2 (wo.n)^2,
+// the ratio of wo's index to wi's. (Derived here; the printed pbrt 2e listing's dmu is wrong, and
+// pbrt-v3 corrected it to this.) From |wi.n|^2 = 1 - eta^2 + eta^2 (wo.n)^2,
 // dmu = (eta - eta^2 (wo.n) / |wi.n|) d(wo.n).
 Vector3f refractedOffset(const Vector3f& wo, const Vector3f& wi, const Vector3f& n, Float eta,
                          const Vector3f& dwo, const Vector3f& dn) {

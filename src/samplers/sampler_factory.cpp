@@ -75,8 +75,10 @@ std::unique_ptr<Sampler> createAdaptive(const ParamSet& params, uint64_t seed, i
   if (sppOverride > 0) maxSamples = sppOverride;
   minSamples = powerOfTwoCount(minSamples, "adaptive sampler: minsamples",
                                params.locationOf("minsamples", loc), warn);
-  maxSamples = powerOfTwoCount(maxSamples, "adaptive sampler: maxsamples",
-                               params.locationOf("maxsamples", loc), warn);
+  maxSamples = sppOverride > 0 ? powerOfTwoCount(maxSamples, "adaptive sampler: --spp",
+                                                 FileLoc{"--spp", 0, 0}, warn)
+                               : powerOfTwoCount(maxSamples, "adaptive sampler: maxsamples",
+                                                 params.locationOf("maxsamples", loc), warn);
   if (sppOverride > 0) {
     minSamples = std::min(minSamples, maxSamples);
   } else if (minSamples > maxSamples) {
@@ -121,9 +123,12 @@ std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& 
     return std::make_unique<StratifiedSampler>(xs, ys, jitter, seed);
   }
   if (name == "lowdiscrepancy") {
-    int spp = powerOfTwoCount(sampleCount(params, sppOverride, loc),
-                              "lowdiscrepancy sampler: pixelsamples",
-                              params.locationOf("pixelsamples", loc), warn);
+    // A count from --spp is the command line's, not the scene's: the warning says so.
+    int count = sampleCount(params, sppOverride, loc);
+    int spp = sppOverride > 0 ? powerOfTwoCount(count, "lowdiscrepancy sampler: --spp",
+                                                FileLoc{"--spp", 0, 0}, warn)
+                              : powerOfTwoCount(count, "lowdiscrepancy sampler: pixelsamples",
+                                                params.locationOf("pixelsamples", loc), warn);
     return std::make_unique<LowDiscrepancySampler>(spp, seed);
   }
   if (name == "halton")

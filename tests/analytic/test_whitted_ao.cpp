@@ -128,8 +128,9 @@ TEST(Whitted, HallOfMirrorsIsTheTruncatedGeometricSeries) {
 // non-negative path terms whose Fresnel weights sum to at most 1 (the eta^2 radiance scalings
 // of entering and leaving cancel), so every pixel grows with maxdepth and stays <= 1. On the
 // axis every interface is met head-on with reflectance F0 = ((eta-1)/(eta+1))^2: maxdepth 2
-// sees only the front reflection, F0; d >= 3 adds the ray that passes through after 2k internal
-// reflections, for 2k <= d-3: L = F0 + (1 - F0)^2 sum_{j<d-2} F0^j = F0 + (1 - F0)(1 - F0^(d-2)).
+// sees only the front reflection, F0; d >= 3 adds the light that leaves the sphere after j
+// internal reflections, for j <= d-3 (through the far side for even j, back through the front for
+// odd j): L = F0 + (1 - F0)^2 sum_{j<d-2} F0^j = F0 + (1 - F0)(1 - F0^(d-2)).
 TEST(Whitted, GlassSphereAgainstUniformSky) {
   std::string header = std::string("LookAt 0 0 5  0 0 0  0 1 0\n")
                            .append("Camera \"perspective\" \"float fov\" [30]\n")

@@ -49,6 +49,12 @@ WorldEnd
   EXPECT_EQ(test::buildSceneText(scene, options).job().sampler->samplesPerPixel(), 16);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("nonesuch"), std::string::npos) << warnings[0];
+  // A count from --spp that needs rounding is blamed on --spp, not on the scene.
+  warnings.clear();
+  options.sppOverride = 6;
+  EXPECT_EQ(test::buildSceneText(scene, options).job().sampler->samplesPerPixel(), 8);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0], "--spp: lowdiscrepancy sampler: --spp 6 rounded up to the power of two 8");
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 
 namespace candela::test {
 
-// Uniform on the unit sphere. The two draws are sequenced: in a braced call their order would be
-// unspecified.
+// Uniform on the unit sphere. The two draws are sequenced: as two arguments of one call their order
+// would be unspecified.
 inline Vector3f randomDirection(RNG& rng) {
   Float u0 = rng.uniformFloat();
   return sampleUniformSphere(Point2f(u0, rng.uniformFloat()));

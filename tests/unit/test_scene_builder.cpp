@@ -267,7 +267,7 @@ TEST(SceneBuilderErrors, NestedWorldBegin) {
 
 TEST(SceneBuilderErrors, MissingWorldEnd) {
   EXPECT_EQ(errorOf("WorldBegin\nShape \"sphere\""),
-            "s.pbrt:0:0: error: end of input inside the world block that began at s.pbrt:1:1: "
+            "s.pbrt: error: end of input inside the world block that began at s.pbrt:1:1: "
             "WorldEnd is missing");
 }
 
