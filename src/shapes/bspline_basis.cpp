@@ -12,9 +12,17 @@ double ratio(double a, double b) { return b > 0 ? a / b : 0.0; }
 
 }  // namespace
 
-int findKnotSpan(const std::vector<double>& knots, int order, int count, double t) {
-  // The last span start in [k - 1, count - 1] not above t; a binary search, as A2.1.
+int findKnotSpan(const std::vector<double>& knots, int order, int count, double t, bool fromLeft) {
   auto first = knots.begin() + (order - 1), last = knots.begin() + count;
+  if (fromLeft) {
+    // The last span start in [k - 1, count - 1] below t, which ends at or above t (t <= U[count]).
+    int s = int(std::lower_bound(first, last, t) - knots.begin()) - 1;
+    s = std::max(s, order - 1);
+    // At t = U[k - 1] the first span may be empty (repeated knots): step on to a real one.
+    while (s < count - 1 && knots[s] == knots[s + 1]) ++s;
+    return s;
+  }
+  // The last span start in [k - 1, count - 1] not above t; a binary search, as A2.1.
   int s = int(std::upper_bound(first, last, t) - knots.begin()) - 1;
   s = std::max(s, order - 1);
   // At t = U[count] with repeated end knots the span found is empty: step back to a real one.
@@ -22,8 +30,9 @@ int findKnotSpan(const std::vector<double>& knots, int order, int count, double 
   return s;
 }
 
-BasisAt evaluateBasis(const std::vector<double>& knots, int order, int count, double t) {
-  const int p = order - 1, s = findKnotSpan(knots, order, count, t);
+BasisAt evaluateBasis(const std::vector<double>& knots, int order, int count, double t,
+                      bool fromLeft) {
+  const int p = order - 1, s = findKnotSpan(knots, order, count, t, fromLeft);
   BasisAt out;
   out.first = s - p;
   // n[r] holds N_{s - p + r, j} while the degree j rises from 0 to p (Cox-de Boor, eq. 2.5). At

@@ -18,11 +18,16 @@ struct BasisAt {
 };
 
 // The knot span s (k - 1 <= s <= count - 1) with U[s] <= t < U[s + 1]; at the end of the valid
-// range, t = U[count], the last nonempty span. Requires a nonempty valid range and t inside it.
-int findKnotSpan(const std::vector<double>& knots, int order, int count, double t);
+// range, t = U[count], the last nonempty span. With fromLeft, the one with U[s] < t <= U[s + 1]
+// (at the start of the range, the first nonempty span): the two differ only at knots. Requires a
+// nonempty valid range and t inside it.
+int findKnotSpan(const std::vector<double>& knots, int order, int count, double t,
+                 bool fromLeft = false);
 
 // The nonzero basis functions and their derivatives at t in the valid range. At a knot the
-// functions and derivatives are those of the span to its right (of the last span at the end).
-BasisAt evaluateBasis(const std::vector<double>& knots, int order, int count, double t);
+// functions and derivatives are those of the span to its right (of the last span at the end), or
+// with fromLeft of the span to its left (of the first at the start): the limits from either side.
+BasisAt evaluateBasis(const std::vector<double>& knots, int order, int count, double t,
+                      bool fromLeft = false);
 
 }  // namespace candela

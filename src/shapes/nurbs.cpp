@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "shapes/bspline_basis.h"
@@ -65,14 +67,20 @@ bool transverse(const Vec3& n, const Vec3& a, const Vec3& b) {
 struct Grid {
   const NurbsSurface& surface;
   double u0, u1, v0, v1;
-  // Control points closer than this are one point given in float: 1e-5 of the larger of the
-  // hull's diagonal and the largest coordinate (float input rounds at ~6e-8 of the latter).
-  double samePoint;
+  // How far the control net reaches along u (the largest distance of a point from the first of
+  // its row) and along v (of its column): what a collapsed row or column is small against.
+  double extentU, extentV;
 };
 
 // Whether dp/du vanishes structurally at the parameters of these bases: a single row of control
 // points is in play (a clamped end, a C0 knot), and its points under the u support coincide (a
 // pole). With u and v swapped (byColumn), dp/dv and a column.
+//
+// Decided on the control points, not on dp/du at the vertex: a pole makes dp/du vanish along the
+// whole line, while a small dp/du at one vertex may be a cusp, where the pole's limit is wrong.
+// The points are one when they are within 1e-5 of the net's extent in that direction (not of the
+// coordinates: a narrow row far from the origin is no pole), or within 4 float ulps of their
+// coordinates (a pole computed in float and written out lands within ~1 ulp per coordinate).
 bool collapsed(const Grid& g, const BasisAt& along, const BasisAt& across, bool byColumn) {
   const NurbsSurface& s = g.surface;
   int line = -1;
@@ -85,24 +93,36 @@ bool collapsed(const Grid& g, const BasisAt& along, const BasisAt& across, bool 
     return Vec3{q[0] / q[3], q[1] / q[3], q[2] / q[3]};
   };
   Vec3 first = point(0);
-  for (int k = 1; k < int(along.value.size()); ++k) {
+  double spread = 0, magnitude = 0;
+  for (int k = 0; k < int(along.value.size()); ++k) {
     Vec3 q = point(k);
-    if (length({q[0] - first[0], q[1] - first[1], q[2] - first[2]}) > g.samePoint) return false;
+    spread = std::max(spread, length({q[0] - first[0], q[1] - first[1], q[2] - first[2]}));
+    magnitude = std::max({magnitude, std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
   }
-  return true;
+  return spread <= std::max(1e-5 * (byColumn ? g.extentV : g.extentU), 4 * FLT_EPSILON * magnitude);
+}
+
+// Whether t is nearer the end than the start of the span the basis at t comes from: at a knot,
+// whether the basis is the limit from below.
+bool fromBelow(const std::vector<double>& knots, int order, const BasisAt& b, double t) {
+  return knots[b.first + order] - t < t - knots[b.first + order - 1];
 }
 
 // dp/du x dp/dv at (u, v), unnormalized; zero when none is found. At a pole, where dp/du = 0 for
 // all u, the normal's limit from inside is that of the first-order change of dp/du, the mixed
-// derivative: dp/du (v + h) ~ h d2p/dudv, so N ~ ±d2p/dudv x dp/dv (sign: the side the patch is
-// on); likewise for a collapsed column. Elsewhere degenerate (order 1, parallel tangents, both
+// derivative: dp/du (v + h) ~ h d2p/dudv, so N ~ ±d2p/dudv x dp/dv, the sign that of h on the
+// side the basis was taken from (at an interior knot the right, at the patch's end the left);
+// likewise for a collapsed column. Elsewhere degenerate (order 1, parallel tangents, both
 // directions collapsed): the normal a small step inside the patch.
 Vec3 surfaceNormal(const Grid& g, const BasisAt& bu, const BasisAt& bv, const NurbsSample& at,
                    double u, double v) {
   Vec3 a = at.dpdu, b = at.dpdv;
   auto towardsPatch = [](const Vec3& x, bool flip) { return flip ? Vec3{-x[0], -x[1], -x[2]} : x; };
-  if (collapsed(g, bu, bv, false)) a = towardsPatch(at.d2pdudv, v > 0.5 * (g.v0 + g.v1));
-  if (collapsed(g, bv, bu, true)) b = towardsPatch(at.d2pdudv, u > 0.5 * (g.u0 + g.u1));
+  const NurbsSurface& s = g.surface;
+  if (collapsed(g, bu, bv, false))
+    a = towardsPatch(at.d2pdudv, fromBelow(s.vknots, s.vorder, bv, v));
+  if (collapsed(g, bv, bu, true))
+    b = towardsPatch(at.d2pdudv, fromBelow(s.uknots, s.uorder, bu, u));
   if (transverse(cross(a, b), a, b)) return cross(a, b);
   NurbsSample near = evaluateNurbs(g.surface, inward(u, g.u0, g.u1), inward(v, g.v0, g.v1));
   if (transverse(cross(near.dpdu, near.dpdv), near.dpdu, near.dpdv))
@@ -120,6 +140,17 @@ std::vector<double> samples(double t0, double t1, int n) {
   return t;
 }
 
+// m scaled to unit length, or zero if it has no direction (zero, or not finite). Scaled by its
+// largest component first, so that huge or tiny finite vectors neither overflow nor underflow.
+Vec3 unit(const Vec3& m) {
+  if (!std::isfinite(m[0]) || !std::isfinite(m[1]) || !std::isfinite(m[2])) return {0, 0, 0};
+  double big = std::max({std::abs(m[0]), std::abs(m[1]), std::abs(m[2])});
+  if (!(big > 0)) return {0, 0, 0};
+  Vec3 q{m[0] / big, m[1] / big, m[2] / big};
+  double len = length(q);
+  return {q[0] / len, q[1] / len, q[2] / len};
+}
+
 }  // namespace
 
 NurbsSample evaluateNurbs(const NurbsSurface& s, double u, double v) {
@@ -131,21 +162,27 @@ std::unique_ptr<TriangleMesh> makeNurbsMesh(const Transform& objectToWorld, bool
                                             const NurbsSurface& s, double u0, double u1, double v0,
                                             double v1, int diceu, int dicev) {
   std::vector<double> us = samples(u0, u1, diceu), vs = samples(v0, v1, dicev);
-  // The bases along each grid line are shared by all the vertices on it.
+  // The bases along each grid line are shared by all the vertices on it. The last line takes the
+  // limit from inside the patch: where u1 is an interior knot, the span to its left.
   std::vector<BasisAt> bu, bv;
-  for (double u : us) bu.push_back(evaluateBasis(s.uknots, s.uorder, s.nu, u));
-  for (double v : vs) bv.push_back(evaluateBasis(s.vknots, s.vorder, s.nv, v));
+  for (int i = 0; i < diceu; ++i)
+    bu.push_back(evaluateBasis(s.uknots, s.uorder, s.nu, us[i], i + 1 == diceu));
+  for (int j = 0; j < dicev; ++j)
+    bv.push_back(evaluateBasis(s.vknots, s.vorder, s.nv, vs[j], j + 1 == dicev));
 
-  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  double largest = 0;
-  for (const std::array<double, 4>& q : s.pw)
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], q[c] / q[3]);
-      hi[c] = std::max(hi[c], q[c] / q[3]);
-      largest = std::max(largest, std::abs(q[c] / q[3]));
+  auto control = [&s](int i, int j) {
+    const std::array<double, 4>& q = s.pw[size_t(j) * s.nu + i];
+    return Vec3{q[0] / q[3], q[1] / q[3], q[2] / q[3]};
+  };
+  auto distance = [](const Vec3& a, const Vec3& b) {
+    return length({a[0] - b[0], a[1] - b[1], a[2] - b[2]});
+  };
+  Grid grid{s, u0, u1, v0, v1, 0, 0};
+  for (int j = 0; j < s.nv; ++j)
+    for (int i = 0; i < s.nu; ++i) {
+      grid.extentU = std::max(grid.extentU, distance(control(i, j), control(0, j)));
+      grid.extentV = std::max(grid.extentV, distance(control(i, j), control(i, 0)));
     }
-  double hull = length({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-  Grid grid{s, u0, u1, v0, v1, 1e-5 * std::max(hull, largest)};
 
   size_t count = size_t(diceu) * dicev;
   std::vector<Vec3> p(count), n(count);
@@ -183,12 +220,11 @@ std::unique_ptr<TriangleMesh> makeNurbsMesh(const Transform& objectToWorld, bool
   points.reserve(count);
   normals.reserve(count);
   for (size_t k = 0; k < count; ++k) {
-    Vec3 m = n[k];
-    if (!(length(m) > 0)) m = faceSum[k];
-    if (!(length(m) > 0) || !std::isfinite(length(m))) m = {0, 0, 1};
-    double len = length(m);
+    Vec3 m = unit(n[k]);
+    if (!(length(m) > 0)) m = unit(faceSum[k]);
+    if (!(length(m) > 0)) m = {0, 0, 1};
     points.emplace_back(Float(p[k][0]), Float(p[k][1]), Float(p[k][2]));
-    normals.emplace_back(Float(m[0] / len), Float(m[1] / len), Float(m[2] / len));
+    normals.emplace_back(Float(m[0]), Float(m[1]), Float(m[2]));
   }
   return std::make_unique<TriangleMesh>(objectToWorld, reverseOrientation, std::move(indices),
                                         std::move(points), std::move(normals),
@@ -253,10 +289,12 @@ class Reader {
                                  d.order - 1, d.n, lo));
     d.t0 = params_.find(nm.t0) ? params_.getOneFloat(nm.t0, 0) : lo;
     d.t1 = params_.find(nm.t1) ? params_.getOneFloat(nm.t1, 0) : hi;
-    for (auto [name, t] : {std::pair{nm.t0, d.t0}, std::pair{nm.t1, d.t1}})
+    for (auto [name, t] : {std::pair{nm.t0, d.t0}, std::pair{nm.t1, d.t1}}) {
+      if (!std::isfinite(t)) fail(name, fmt::format("\"{}\" = {} is not finite", name, t));
       if (!(t >= lo && t <= hi))
         fail(name, fmt::format("\"{}\" = {} is outside the knot range [{}, {}] ({}[{}] .. [{}])",
                                name, t, lo, hi, nm.knots, d.order - 1, d.n));
+    }
     if (!(d.t0 < d.t1))
       fail(params_.find(nm.t1) ? nm.t1 : nm.t0,
            fmt::format("\"{}\" = {} must be less than \"{}\" = {}", nm.t0, d.t0, nm.t1, d.t1));
@@ -296,6 +334,13 @@ class Reader {
       if (!(f[i + 3] > 0))
         fail("Pw", fmt::format("\"Pw\" point {} has weight {}: weights must be positive", i / 4,
                                f[i + 3]));
+      // The surface lies in the hull of the projected points (the weights are positive): if they
+      // fit in float, so do its points. A tiny weight can carry a point far beyond.
+      double x = double(f[i]) / f[i + 3], y = double(f[i + 1]) / f[i + 3],
+             z = double(f[i + 2]) / f[i + 3], most = std::numeric_limits<Float>::max();
+      if (!(std::abs(x) <= most && std::abs(y) <= most && std::abs(z) <= most))
+        fail("Pw", fmt::format("\"Pw\" point {} is at ({:g}, {:g}, {:g}), beyond float's range",
+                               i / 4, x, y, z));
       pw.push_back({f[i], f[i + 1], f[i + 2], f[i + 3]});
     }
     return pw;
@@ -319,8 +364,9 @@ std::vector<std::unique_ptr<Shape>> createNurbsShapes(const Transform& objectToW
   // triangle shapes each, double-precision scratch).
   long long vertices = (long long)u.dice * v.dice;
   if (vertices > (1LL << 24))
-    read.fail("diceu", fmt::format("diceu * dicev = {} * {} = {} vertices is too many (at most {})",
-                                   u.dice, v.dice, vertices, 1LL << 24));
+    read.fail(v.dice > u.dice ? "dicev" : "diceu",
+              fmt::format("diceu * dicev = {} * {} = {} vertices is too many (at most {})", u.dice,
+                          v.dice, vertices, 1LL << 24));
   NurbsSurface surface;
   surface.nu = u.n;
   surface.uorder = u.order;
@@ -331,6 +377,18 @@ std::vector<std::unique_ptr<Shape>> createNurbsShapes(const Transform& objectToW
   surface.pw = read.controlPoints(u.n, v.n);
   std::unique_ptr<TriangleMesh> mesh = makeNurbsMesh(objectToWorld, reverseOrientation, surface,
                                                      u.t0, u.t1, v.t0, v.t1, u.dice, v.dice);
+  // The points fit in float in object space (controlPoints); a transform can still carry them out
+  // of range, and the mesh's bound and intersections would be NaN.
+  for (size_t k = 0; k < mesh->p.size(); ++k) {
+    const Point3f& q = mesh->p[k];
+    const Normal3f& nn = mesh->n[k];
+    bool pointOk = std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+    if (!pointOk || !std::isfinite(nn.x) || !std::isfinite(nn.y) || !std::isfinite(nn.z))
+      read.fail(params.find("Pw") ? "Pw" : "P",
+                fmt::format("the surface {} at (u, v) = ({}, {}) is not finite in float in world "
+                            "space (the control points or the transform are too large)",
+                            pointOk ? "normal" : "point", mesh->uv[k].x, mesh->uv[k].y));
+  }
   std::vector<std::unique_ptr<Shape>> shapes = createTriangleShapes(mesh.get());
   *meshOut = std::move(mesh);
   return shapes;

@@ -34,10 +34,11 @@ NurbsSample evaluateNurbs(const NurbsSurface& surface, double u, double v);
 
 // The surface at diceu x dicev (u, v) evenly spaced over [u0, u1] x [v0, v1]: vertex (i, j) is
 // sample j diceu + i with uv (u_i, v_j); each grid cell is two triangles wound counterclockwise
-// in (u, v), so that dp/du x dp/dv, the vertex normal, is on the winding's side. Where that cross
-// product vanishes, the normal is its limit from inside the patch at a pole (a row or column of
-// control points collapsed to one point), else the surface normal a small step inside, else the
-// average of the neighbouring triangles' normals, else +z: never NaN.
+// in (u, v), so that dp/du x dp/dv, the vertex normal, is on the winding's side. A grid line on a
+// knot takes the span to its right, except the last (u1, v1), which takes the patch's own, to its
+// left. Where the cross product vanishes, the normal is its limit from that span at a pole (a row
+// or column of control points collapsed to one point), else the surface normal a small step
+// inside, else the average of the neighbouring triangles' normals, else +z: never NaN.
 std::unique_ptr<TriangleMesh> makeNurbsMesh(const Transform& objectToWorld, bool reverseOrientation,
                                             const NurbsSurface& surface, double u0, double u1,
                                             double v0, double v1, int diceu, int dicev);
@@ -46,7 +47,8 @@ std::unique_ptr<TriangleMesh> makeNurbsMesh(const Transform& objectToWorld, bool
 // nondecreasing), optional "float u0", "u1" (default and limits: the valid range uknots[uorder -
 // 1] .. uknots[nu]); the same for v; "point P" (nu nv points, u fastest) or "float Pw" (nu nv
 // homogeneous x y z w, w > 0). Candela extension: "integer diceu", "dicev" (default 30, pbrt-v2's
-// fixed grid), the vertices along each direction. Bad parameters: SceneError at the parameter.
+// fixed grid), the vertices along each direction. Bad parameters, control points beyond float's
+// range and a surface the transform carries beyond it: SceneError at the parameter.
 std::vector<std::unique_ptr<Shape>> createNurbsShapes(const Transform& objectToWorld,
                                                       bool reverseOrientation,
                                                       const ParamSet& params,

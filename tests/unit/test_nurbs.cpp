@@ -115,6 +115,36 @@ TEST(BsplineBasis, KnotSpans) {
   EXPECT_EQ(findKnotSpan(knots, 3, 5, 1), 4);    // the end: the last nonempty span
 }
 
+TEST(BsplineBasis, LeftLimitsAtKnots) {
+  std::vector<double> knots = {0, 0, 0, 0.4, 0.4, 1, 1, 1};  // order 3, 5 functions
+  EXPECT_EQ(findKnotSpan(knots, 3, 5, 0, true), 2);          // the start: the first span
+  EXPECT_EQ(findKnotSpan(knots, 3, 5, 0.4, true), 2);  // the span to the left of the double knot
+  EXPECT_EQ(findKnotSpan(knots, 3, 5, 0.7, true), 4);
+  EXPECT_EQ(findKnotSpan(knots, 3, 5, 1, true), 4);
+  // At every knot in the range, the basis from the left is the limit of the bases just below it
+  // (the derivatives too, which jump at knots of multiplicity order - 1).
+  const double h = 1e-9;
+  for (const KnotCase& c : knotCases()) {
+    SCOPED_TRACE(c.name);
+    double lo = c.knots[c.order - 1], hi = c.knots[c.count()];
+    for (double knot : c.knots) {
+      if (!(knot > lo && knot <= hi)) continue;
+      int s = findKnotSpan(c.knots, c.order, c.count(), knot, true);
+      EXPECT_LT(c.knots[s], knot);
+      EXPECT_GE(c.knots[s + 1], knot);
+      BasisAt left = evaluateBasis(c.knots, c.order, c.count(), knot, true);
+      BasisAt below = evaluateBasis(c.knots, c.order, c.count(), knot - h);
+      std::vector<double> v = dense(left, c.count(), false), d = dense(left, c.count(), true);
+      std::vector<double> vb = dense(below, c.count(), false), db = dense(below, c.count(), true);
+      for (int i = 0; i < c.count(); ++i) {
+        // h times the derivatives: |N'| < 1e3 and |N''| < 1e5 for these spans.
+        EXPECT_NEAR(v[i], vb[i], 1e-6) << "knot " << knot << " i = " << i;
+        EXPECT_NEAR(d[i], db[i], 1e-4) << "knot " << knot << " i = " << i;
+      }
+    }
+  }
+}
+
 // A patch as plain data, then as the parameters of a scene statement. Each parameter has its own
 // line, so that errors can be checked to be at the right one.
 struct Patch {
@@ -569,6 +599,196 @@ TEST(Nurbs, FactoryErrors) {
     EXPECT_NE(std::string(e.what()).find("nurbs: missing \"integer nu\""), std::string::npos)
         << e.what();
   }
+}
+
+// The angle between two directions, accurate near 0 (acos loses half the digits there).
+double angleBetween(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  std::array<double, 3> c = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                             a[0] * b[1] - a[1] * b[0]};
+  return std::atan2(std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
+                    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+
+std::array<double, 3> asArray(const Normal3f& n) { return {n.x, n.y, n.z}; }
+
+// The exact surface normal at (u, v), from the derivatives in double.
+std::array<double, 3> exactNormal(const NurbsSurface& s, double u, double v) {
+  NurbsSample at = evaluateNurbs(s, u, v);
+  const auto &a = at.dpdu, &b = at.dpdv;
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+TEST(Nurbs, NormalsDoNotDependOnWhereThePatchIs) {
+  // A bicubic patch 0.06 wide in u and 1 long in v, with bumps in z, at the origin and moved by
+  // 1e4 and 1e5 along x. No row or column of it is a pole, so every vertex normal is the exact
+  // one; the boundary rows, 0.06 wide, once counted as poles far from the origin (tolerance 1e-5
+  // of the largest coordinate), which turned their normals by 90 degrees. At 1e5 the rows are
+  // still 5 float ulps of x wide: above the rounding a pole written in float can have.
+  for (double offset : {0.0, 1e4, 1e5}) {
+    SCOPED_TRACE(fmt::format("offset {}", offset));
+    NurbsSurface s;
+    s.nu = s.nv = s.uorder = s.vorder = 4;
+    s.uknots = s.vknots = {0, 0, 0, 0, 1, 1, 1, 1};
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i)
+        s.pw.push_back({offset + 0.02 * i, j / 3.0, 0.3 * (i * j % 3), 1});
+    auto mesh = makeNurbsMesh(Transform(), false, s, 0, 1, 0, 1, 9, 9);
+    double worst = 0;
+    for (int j = 0; j < 9; ++j)
+      for (int i = 0; i < 9; ++i)
+        worst = std::max(worst, angleBetween(asArray(mesh->n[size_t(j) * 9 + i]),
+                                             exactNormal(s, i / 8.0, j / 8.0)));
+    RecordProperty(fmt::format("maxNormalAngleAtOffset{:g}", offset), fmt::format("{:.3g}", worst));
+    // Float normals round at ~6e-8 per component; the derivatives at 1e5 lose ~1e-10 to
+    // cancellation.
+    EXPECT_LT(worst, 1e-6);
+  }
+}
+
+// An hourglass: the quadratic rational circle in u swept along the profile (ρ, z) = (1, -1),
+// (0, 0), (1, 1) of order 2 in v, with the pinch, a pole row, at the interior knot v = 1.25 of
+// [0, 2]. Both halves are cones, so the normal is constant along each generator (fixed u).
+NurbsSurface hourglass() {
+  NurbsSurface s;
+  s.nu = 9;
+  s.uorder = 3;
+  s.uknots.assign(kCircleKnots.begin(), kCircleKnots.end());
+  s.nv = 3;
+  s.vorder = 2;
+  s.vknots = {0, 0, 1.25, 2, 2};
+  const double profile[3][2] = {{1, -1}, {0, 0}, {1, 1}};
+  for (const auto& [rho, z] : profile)
+    for (const auto& [x, y, w] : circle(1)) s.pw.push_back({w * rho * x, w * rho * y, w * z, w});
+  return s;
+}
+
+// The same surface with u and v exchanged: rows become columns (and the normals turn over).
+NurbsSurface transposed(const NurbsSurface& s) {
+  NurbsSurface t;
+  t.nu = s.nv;
+  t.uorder = s.vorder;
+  t.uknots = s.vknots;
+  t.nv = s.nu;
+  t.vorder = s.uorder;
+  t.vknots = s.uknots;
+  for (int i = 0; i < s.nu; ++i)
+    for (int j = 0; j < s.nv; ++j) t.pw.push_back(s.pw[size_t(j) * s.nu + i]);
+  return t;
+}
+
+TEST(Nurbs, PolesOnAnInteriorKnotOrAtASubrangeEndFaceTheirPatch) {
+  // The pinch's normals are the limit from the side the mesh takes it from: from the upper cone
+  // over the whole range (an interior knot is evaluated from its right), from the lower cone
+  // when the patch ends at it (v1 = 1.25), from the upper one when the patch starts at it. Each
+  // equals the normal on its cone's generator one grid step away. Then the same with the pinch
+  // as a column (u and v exchanged).
+  struct Case {
+    const char *name, *key;
+    double v0, v1;
+    int dice, pinch, neighbour;  // grid lines along v
+  };
+  const NurbsSurface rows = hourglass(), columns = transposed(rows);
+  const int around = 9;  // vertices around the circle
+  for (const Case& c : {Case{"whole range", "Whole", 0, 2, 9, 5, 6},
+                        Case{"ends at the pinch", "Ending", 0, 1.25, 6, 5, 4},
+                        Case{"starts at the pinch", "Starting", 1.25, 2, 4, 0, 1}}) {
+    for (bool asColumn : {false, true}) {
+      SCOPED_TRACE(fmt::format("{}, pinch as a {}", c.name, asColumn ? "column" : "row"));
+      auto mesh = asColumn
+                      ? makeNurbsMesh(Transform(), false, columns, c.v0, c.v1, 0, 1, c.dice, around)
+                      : makeNurbsMesh(Transform(), false, rows, 0, 1, c.v0, c.v1, around, c.dice);
+      auto at = [&](int line, int k) {
+        return asColumn ? size_t(k) * c.dice + line : size_t(line) * around + k;
+      };
+      double worst = 0;
+      int disagreeing = 0;
+      for (int k = 0; k < around; ++k) {
+        Normal3f pinch = mesh->n[at(c.pinch, k)], next = mesh->n[at(c.neighbour, k)];
+        ASSERT_LT(Vector3f(mesh->p[at(c.pinch, k)]).length(), 1e-6f);
+        worst = std::max(worst, double(Vector3f(pinch - next).length()));
+        // The radial parts agree in sign: both face out (or, transposed, both in).
+        Point3f q = mesh->p[at(c.neighbour, k)];
+        disagreeing += !((pinch.x * q.x + pinch.y * q.y) * (next.x * q.x + next.y * q.y) > 0);
+      }
+      RecordProperty(fmt::format("maxPinchNormalError{}{}", c.key, asColumn ? "Column" : "Row"),
+                     fmt::format("{:.3g}", worst));
+      EXPECT_EQ(disagreeing, 0);
+      // Both normals are the cone's exact one, rounded to float.
+      EXPECT_LT(worst, 1e-6);
+    }
+  }
+}
+
+TEST(Nurbs, PointsBeyondFloatAreASceneErrorNotNaN) {
+  // A weight of 1e-20 under x = 1e30 puts the point at 1e50: finite and positive, but no float.
+  Patch p = planePatch(2, {0, 0, 1, 1}, 2, {0, 0, 1, 1});
+  p.Pw = {1e30f, 0, 0, 1e-20f, 1, 0, 0, 1, 0, 1, 0, 1, 1, 1, 0, 1};
+  p.P.clear();
+  expectError(p, lineOf("Pw"), "\"Pw\" point 0 is at (1e+50, 0, 0), beyond float's range");
+  // Control points that fit, moved out of float's range by the transform.
+  Patch far = planePatch(2, {0, 0, 1, 1}, 2, {0, 0, 1, 1});
+  for (Float& x : far.P) x = x * 1e30f + 1e30f;
+  std::unique_ptr<TriangleMesh> mesh;
+  try {
+    createNurbsShapes(scale(1e10f, 1e10f, 1e10f), false, toParams(far), &mesh,
+                      FileLoc{"nurbs.pbrt", kShapeLine, 1});
+    ADD_FAILURE() << "the vertices are at ~1e40 in world space";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.location().line, lineOf("P")) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nurbs: the surface point at (u, v) = (0, 0) is not "
+                                         "finite in float in world space"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Nurbs, FactoryErrorsForDiceLimitsAndNonFiniteParameters) {
+  const Patch good = planePatch(2, {0, 0, 0.3f, 1, 1}, 3, {0, 0, 0, 1, 1, 1});
+  auto with = [&](auto change) {
+    Patch p = good;
+    change(p);
+    return p;
+  };
+  // 2^24 vertices at most; the error is at the larger of the two counts.
+  expectError(with([](Patch& p) {
+                p.ints = {{"diceu", 4096}, {"dicev", 4097}};
+              }),
+              lineOf("dicev"), "diceu * dicev = 4096 * 4097 = 16781312 vertices is too many");
+  expectError(with([](Patch& p) {
+                p.ints = {{"diceu", 8193}, {"dicev", 2048}};
+              }),
+              lineOf("diceu"), "diceu * dicev = 8193 * 2048 = 16779264 vertices is too many");
+  // Equal counts, whose product overflows int: computed in 64 bits, the error at the first.
+  expectError(with([](Patch& p) {
+                p.ints = {{"diceu", 1 << 30}, {"dicev", 1 << 30}};
+              }),
+              lineOf("diceu"), "= 1073741824 * 1073741824 = 1152921504606846976 vertices");
+  const Float inf = std::numeric_limits<Float>::infinity(),
+              nan = std::numeric_limits<Float>::quiet_NaN();
+  expectError(with([&](Patch& p) { p.uknots[2] = inf; }), lineOf("uknots"),
+              "\"uknots\"[2] is not finite");
+  expectError(with([&](Patch& p) { p.vknots[0] = -inf; }), lineOf("vknots"),
+              "\"vknots\"[0] is not finite");
+  expectError(with([&](Patch& p) { p.uknots[4] = nan; }), lineOf("uknots"),
+              "\"uknots\"[4] is not finite");
+  expectError(with([&](Patch& p) {
+                p.floats = {{"u0", nan}};
+              }),
+              lineOf("u0"), "\"u0\" = nan is not finite");
+  expectError(with([&](Patch& p) {
+                p.floats = {{"v1", inf}};
+              }),
+              lineOf("v1"), "\"v1\" = inf is not finite");
+  expectError(with([&](Patch& p) {
+                p.Pw = {0, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 1, 1, 1, 0, nan};
+                p.nv = 2;
+                p.vorder = 2;
+                p.vknots = {0, 0, 1, 1};
+                p.nu = 2;
+                p.uknots = {0, 0, 1, 1};
+                p.P.clear();
+              }),
+              lineOf("Pw"), "\"Pw\" point 3 is not finite");
 }
 
 }  // namespace
