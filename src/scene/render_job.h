@@ -22,7 +22,7 @@
 #include "scene/scene.h"
 #include "scene/scene_description.h"
 #include "scene/texture_factory.h"
-#include "shapes/loop_subdiv_shape.h"
+#include "shapes/loop_producer.h"
 #include "shapes/shape.h"
 
 namespace candela {

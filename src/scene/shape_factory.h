@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "scene/scene_description.h"
-#include "shapes/loop_subdiv_shape.h"
+#include "shapes/loop_producer.h"
 #include "shapes/shape.h"
 
 namespace candela {

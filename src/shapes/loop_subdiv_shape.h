@@ -5,15 +5,11 @@
 #include <memory>
 #include <vector>
 
+#include "shapes/loop_producer.h"
 #include "shapes/loop_subdiv.h"
 #include "shapes/triangle_mesh.h"
 
 namespace candela {
-
-// Which code refines (the command line's --subdiv): ours, the draft's algorithm (loop_subdiv.h), or
-// OpenSubdiv 3.5 (Sdc::SCHEME_LOOP, VTX_BOUNDARY_EDGE_ONLY). Both apply the same rules, so both
-// give the same surface and the same image.
-enum class LoopProducer { Book, OpenSubdiv };
 
 // The rules the shape uses with either producer: Loop's β and the B-spline boundary limit, which
 // are what OpenSubdiv implements. The draft's 1/5, 3/5, 1/5 boundary limit puts the point off the
