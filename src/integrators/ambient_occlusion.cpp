@@ -38,8 +38,7 @@ Spectrum AmbientOcclusionIntegrator::Li(const RayDifferential& ray, const Scene&
     Vector3f w = s * local.x + t * local.y + n * local.z;
     Ray probe = isect.spawnRay(w);
     probe.tMax = maxDist_;
-    ++ctx.stats.shadowRays;
-    if (!scene.aggregate().intersectP(probe)) ++clear;
+    if (!scene.intersectP(probe, ctx.stats)) ++clear;
   }
   return Spectrum(Float(clear) / Float(nSamples_));
 }

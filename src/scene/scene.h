@@ -30,6 +30,11 @@ class Scene {
     ++stats.intersectionRays;
     return aggregate_->intersect(ray, isect);
   }
+  // Whether anything lies along the ray within its tMax (counted as a shadow ray).
+  bool intersectP(const Ray& ray, RayStats& stats) const {
+    ++stats.shadowRays;
+    return aggregate_->intersectP(ray);
+  }
   bool unoccluded(const VisibilityTester& vis, RayStats& stats) const {
     ++stats.shadowRays;
     return vis.unoccluded(*aggregate_);
