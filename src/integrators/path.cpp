@@ -2,6 +2,7 @@
 
 #include "accel/primitive.h"
 #include "integrators/light_sampling.h"
+#include "integrators/specular_differentials.h"
 #include "materials/material.h"
 
 namespace candela {
@@ -14,6 +15,7 @@ Spectrum PathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene
   *alpha = 0;
   for (int bounces = 0;; ++bounces) {
     SurfaceInteraction isect;
+    Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
     bool hit = scene.intersect(ray, &isect, ctx.stats);
     if (bounces == 0) *alpha = hit ? 1 : 0;
     // Emission is counted here only where next-event estimation could not have sampled it.
@@ -27,7 +29,7 @@ Spectrum PathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene
     if (!hit || bounces >= maxDepth_) break;
     const Primitive& prim = *isect.primitive;
     if (!prim.material) {
-      ray = RayDifferential(isect.spawnRay(ray.d));
+      ray = continueThrough(isect, ray, tMax);
       --bounces;
       continue;
     }

@@ -66,4 +66,15 @@ RayDifferential spawnSpecularRay(const SurfaceInteraction& isect, const BSDF& bs
   return ray;
 }
 
+RayDifferential continueThrough(const SurfaceInteraction& isect, const RayDifferential& ray,
+                                Float tMax) {
+  Float tHit = ray.tMax;  // intersect shortened it to the hit
+  RayDifferential next(isect.spawnRay(ray.d));
+  next.tMax = tMax - tHit;
+  if (ray.hasDifferentials)
+    next = RayDifferential(next, Ray(ray.rxOrigin + ray.rxDirection * tHit, ray.rxDirection),
+                           Ray(ray.ryOrigin + ray.ryDirection * tHit, ray.ryDirection));
+  return next;
+}
+
 }  // namespace candela

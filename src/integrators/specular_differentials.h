@@ -15,4 +15,12 @@ RayDifferential spawnSpecularRay(const SurfaceInteraction& isect, const BSDF& bs
                                  const RayDifferential& incoming, const Vector3f& wi,
                                  bool transmission);
 
+// The ray continued straight through a surface that does not scatter (a shape without a
+// material), as the same ray: tMax is the ray's extent before it hit isect, and the result keeps
+// what remains of it and the differentials, the offset rays moved along by the same t (as
+// pbrt-v4's SkipIntersection), so textures behind the surface are still filtered and yon still
+// clips.
+RayDifferential continueThrough(const SurfaceInteraction& isect, const RayDifferential& ray,
+                                Float tMax);
+
 }  // namespace candela

@@ -25,22 +25,9 @@ Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Sc
   const Primitive& prim = *isect.primitive;
   if (prim.areaLight) l += prim.areaLight->L(isect, isect.wo);
   if (!prim.material) {
-    // An interface without scattering: continue straight through, at the same depth, as the
-    // same ray: what remains of its extent, and its differentials so that textures behind the
-    // interface are still filtered (the offset rays move along by the same t, as in pbrt-v4's
-    // SkipIntersection).
-    Float tHit = ray.tMax;
-    RayDifferential next(isect.spawnRay(ray.d));
-    next.tMax = tMax - tHit;
-    if (ray.hasDifferentials) {
-      next.hasDifferentials = true;
-      next.rxOrigin = ray.rxOrigin + ray.rxDirection * tHit;
-      next.ryOrigin = ray.ryOrigin + ray.ryDirection * tHit;
-      next.rxDirection = ray.rxDirection;
-      next.ryDirection = ray.ryDirection;
-    }
+    // An interface without scattering: continue straight through, at the same depth.
     Float a;
-    return l + trace(next, scene, ctx, depth, &a);
+    return l + trace(continueThrough(isect, ray, tMax), scene, ctx, depth, &a);
   }
   isect.computeDifferentials(ray);
   const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
