@@ -11,18 +11,11 @@
 #include <string>
 
 #include "cameras/camera.h"
+#include "support/geometry_expect.h"
 #include "support/render_scene.h"
 
 namespace candela {
 namespace {
-
-CameraSample sampleAt(Float x, Float y, Float time) {
-  CameraSample s;
-  s.pFilm = Point2f(x, y);
-  s.pLens = Point2f(0.5f, 0.5f);
-  s.time = time;
-  return s;
-}
 
 // A 20 x 10 image; the options block's CTM is `startCtm` at time 0 and `endCtm` at time 1.
 std::string cameraScene(const std::string& camera, const std::string& startCtm,
@@ -44,15 +37,6 @@ const char* kStartTranslate = "Translate 1 2 3";
 const char* kEndTranslate = "Translate -3 0 5";
 const Point3f kStartEye(-1, -2, -3), kEndEye(3, 0, -5), kMidEye(1, -1, -4);
 
-void expectNear(const Point3f& a, const Point3f& b, Float tol, const char* what) {
-  EXPECT_NEAR(a.x, b.x, tol) << what;
-  EXPECT_NEAR(a.y, b.y, tol) << what;
-  EXPECT_NEAR(a.z, b.z, tol) << what;
-}
-void expectNear(const Vector3f& a, const Vector3f& b, Float tol, const char* what) {
-  expectNear(Point3f(a.x, a.y, a.z), Point3f(b.x, b.y, b.z), tol, what);
-}
-
 // With hither 0 the centre pixel's ray leaves from the camera's origin for all three cameras
 // (the orthographic camera's centre film point is the origin too).
 TEST(CameraMotion, RaysLeaveFromTheKeyPositionsAndTheirMidpoint) {
@@ -65,31 +49,33 @@ TEST(CameraMotion, RaysLeaveFromTheKeyPositionsAndTheirMidpoint) {
     Ray r;
     // The keys themselves are not interpolated (AnimatedTransform::interpolate returns them), so
     // the origins are exact.
-    cam.generateRay(sampleAt(10, 5, 0), &r);
+    cam.generateRay(test::cameraSample(10, 5, Point2f(0.5f, 0.5f), 0), &r);
     EXPECT_EQ(r.o, kStartEye);
     EXPECT_EQ(r.time, 0);
-    cam.generateRay(sampleAt(10, 5, 1), &r);
+    cam.generateRay(test::cameraSample(10, 5, Point2f(0.5f, 0.5f), 1), &r);
     EXPECT_EQ(r.o, kEndEye);
     EXPECT_EQ(r.time, 1);
     // Pure translation interpolates linearly; 1e-6 allows for the decomposition's rounding.
-    cam.generateRay(sampleAt(10, 5, 0.5f), &r);
-    expectNear(r.o, kMidEye, 1e-6f, "midpoint");
+    cam.generateRay(test::cameraSample(10, 5, Point2f(0.5f, 0.5f), 0.5f), &r);
+    test::expectNear(r.o, kMidEye, 1e-6f, "midpoint");
     EXPECT_EQ(r.time, 0.5f);
 
     // The differential rays move with the camera: against a still camera at the midpoint, the
     // same offsets from the main ray and the same directions.
     auto still = test::buildSceneText(cameraScene(camera, "Translate -1 1 4", "Translate -1 1 4"));
     RayDifferential moving, fixed;
-    cam.generateRayDifferential(sampleAt(7.25f, 3.5f, 0.5f), &moving);
-    still.job().camera->generateRayDifferential(sampleAt(7.25f, 3.5f, 0.5f), &fixed);
+    cam.generateRayDifferential(test::cameraSample(7.25f, 3.5f, Point2f(0.5f, 0.5f), 0.5f),
+                                &moving);
+    still.job().camera->generateRayDifferential(
+        test::cameraSample(7.25f, 3.5f, Point2f(0.5f, 0.5f), 0.5f), &fixed);
     ASSERT_TRUE(moving.hasDifferentials);
     ASSERT_TRUE(fixed.hasDifferentials);
-    expectNear(moving.o, fixed.o, 1e-6f, "main origin");
-    expectNear(moving.d, fixed.d, 1e-6f, "main direction");
-    expectNear(moving.rxOrigin, fixed.rxOrigin, 1e-6f, "x origin");
-    expectNear(moving.ryOrigin, fixed.ryOrigin, 1e-6f, "y origin");
-    expectNear(moving.rxDirection, fixed.rxDirection, 1e-6f, "x direction");
-    expectNear(moving.ryDirection, fixed.ryDirection, 1e-6f, "y direction");
+    test::expectNear(moving.o, fixed.o, 1e-6f, "main origin");
+    test::expectNear(moving.d, fixed.d, 1e-6f, "main direction");
+    test::expectNear(moving.rxOrigin, fixed.rxOrigin, 1e-6f, "x origin");
+    test::expectNear(moving.ryOrigin, fixed.ryOrigin, 1e-6f, "y origin");
+    test::expectNear(moving.rxDirection, fixed.rxDirection, 1e-6f, "x direction");
+    test::expectNear(moving.ryDirection, fixed.ryDirection, 1e-6f, "y direction");
   }
 }
 
@@ -100,11 +86,11 @@ TEST(CameraMotion, ShutterIntervalPicksTheTimeOfTheMotion) {
                   "\"float shutterclose\" [0.75]",
                   kStartTranslate, kEndTranslate));
   Ray r;
-  built.job().camera->generateRay(sampleAt(10, 5, 0), &r);
+  built.job().camera->generateRay(test::cameraSample(10, 5, Point2f(0.5f, 0.5f), 0), &r);
   EXPECT_EQ(r.time, 0.25f);
-  expectNear(r.o, Point3f(0, -1.5f, -3.5f), 1e-6f, "quarter");
-  built.job().camera->generateRay(sampleAt(10, 5, 1), &r);
-  expectNear(r.o, Point3f(2, -0.5f, -4.5f), 1e-6f, "three quarters");
+  test::expectNear(r.o, Point3f(0, -1.5f, -3.5f), 1e-6f, "quarter");
+  built.job().camera->generateRay(test::cameraSample(10, 5, Point2f(0.5f, 0.5f), 1), &r);
+  test::expectNear(r.o, Point3f(2, -0.5f, -4.5f), 1e-6f, "three quarters");
 }
 
 // A turning camera (world-to-camera Rotate 90 about y at the end, so camera-to-world turns by -90
@@ -119,16 +105,17 @@ TEST(CameraMotion, TurningCameraTurnsItsRaysAndDifferentials) {
     Float angle = -90 * s;
     Vector3f want(std::sin(radians(angle)), 0, std::cos(radians(angle)));
     RayDifferential r;
-    cam.generateRayDifferential(sampleAt(10, 5, s), &r);
-    expectNear(r.d, want, 2e-6f, "centre direction");
+    cam.generateRayDifferential(test::cameraSample(10, 5, Point2f(0.5f, 0.5f), s), &r);
+    test::expectNear(r.d, want, 2e-6f, "centre direction");
     char still[64];
     std::snprintf(still, sizeof still, "Rotate %.9g 0 1 0", double(-angle));
     auto fixed = test::buildSceneText(
         cameraScene("Camera \"perspective\" \"float fov\" [40]", still, still));
     RayDifferential f;
-    fixed.job().camera->generateRayDifferential(sampleAt(10, 5, s), &f);
-    expectNear(r.rxDirection, f.rxDirection, 2e-6f, "x differential");
-    expectNear(r.ryDirection, f.ryDirection, 2e-6f, "y differential");
+    fixed.job().camera->generateRayDifferential(test::cameraSample(10, 5, Point2f(0.5f, 0.5f), s),
+                                                &f);
+    test::expectNear(r.rxDirection, f.rxDirection, 2e-6f, "x differential");
+    test::expectNear(r.ryDirection, f.ryDirection, 2e-6f, "y differential");
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "cameras/camera.h"
 #include "cameras/perspective_camera.h"
+#include "support/geometry_expect.h"
 #include "support/param_items.h"
 
 namespace candela {
@@ -15,25 +16,9 @@ Float angleBetween(const Vector3f& a, const Vector3f& b) {
   return std::acos(clamp(dot(normalize(a), normalize(b)), -1, 1));
 }
 
-CameraSample at(Float x, Float y) {
-  CameraSample s;
-  s.pFilm = Point2f(x, y);
-  s.pLens = Point2f(0.5f, 0.5f);
-  return s;
-}
-
 std::unique_ptr<Camera> makeCamera(const ParamSet& ps, const Transform& worldToCamera,
                                    Point2i res) {
   return createCamera("perspective", ps, inverse(worldToCamera), res, FileLoc{"c.pbrt", 1, 1});
-}
-
-void expectNear(const Vector3f& a, const Vector3f& b, Float tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
-void expectNear(const Point3f& a, const Point3f& b, Float tol) {
-  expectNear(Vector3f(a), Vector3f(b), tol);
 }
 
 TEST(PerspectiveCamera, CentreRayAlongViewDirection) {
@@ -42,11 +27,11 @@ TEST(PerspectiveCamera, CentreRayAlongViewDirection) {
   ps.add(test::floats("fov", {50}));
   auto cam = makeCamera(ps, lookAt(eye, look, Vector3f(0, 1, 0)), {200, 100});
   Ray r;
-  EXPECT_EQ(cam->generateRay(at(100, 50), &r), 1.f);
-  expectNear(r.d, normalize(look - eye), 1e-6f);
+  EXPECT_EQ(cam->generateRay(test::cameraSample(100, 50), &r), 1.f);
+  test::expectNear(r.d, normalize(look - eye), 1e-6f);
   EXPECT_NEAR(r.d.length(), 1, 1e-6);
   // The origin is on the hither plane (default 1e-3) along the ray.
-  expectNear(r.o, eye + r.d * 1e-3f, 1e-6f);
+  test::expectNear(r.o, eye + r.d * 1e-3f, 1e-6f);
 }
 
 TEST(PerspectiveCamera, FovSpansTheShorterAxis) {
@@ -57,9 +42,9 @@ TEST(PerspectiveCamera, FovSpansTheShorterAxis) {
   // Landscape: the fov is vertical; the horizontal half-angle is atan(aspect tan(fov/2)).
   auto wide = makeCamera(ps, identity, {300, 100});
   Ray top, bottom, left;
-  wide->generateRay(at(150, 0), &top);
-  wide->generateRay(at(150, 100), &bottom);
-  wide->generateRay(at(0, 50), &left);
+  wide->generateRay(test::cameraSample(150, 0), &top);
+  wide->generateRay(test::cameraSample(150, 100), &bottom);
+  wide->generateRay(test::cameraSample(0, 50), &left);
   Vector3f view(0, 0, 1);
   EXPECT_NEAR(degrees(angleBetween(top.d, view)), fov / 2, 1e-3);
   EXPECT_NEAR(degrees(angleBetween(bottom.d, view)), fov / 2, 1e-3);
@@ -67,8 +52,8 @@ TEST(PerspectiveCamera, FovSpansTheShorterAxis) {
   // Portrait: the fov is horizontal.
   auto tall = makeCamera(ps, identity, {100, 300});
   Ray l, t;
-  tall->generateRay(at(0, 150), &l);
-  tall->generateRay(at(50, 0), &t);
+  tall->generateRay(test::cameraSample(0, 150), &l);
+  tall->generateRay(test::cameraSample(50, 0), &t);
   EXPECT_NEAR(degrees(angleBetween(l.d, view)), fov / 2, 1e-3);
   EXPECT_NEAR(angleBetween(t.d, view), std::atan(3 * std::tan(radians(fov / 2))), 1e-5);
 }
@@ -82,9 +67,9 @@ TEST(PerspectiveCamera, PointAtHalfFovProjectsToTheImageEdge) {
   Float h = std::tan(radians(fov / 2));
   Point3f target(0, 10 * h, 10);
   Ray r;
-  cam->generateRay(at(200, 0), &r);
+  cam->generateRay(test::cameraSample(200, 0), &r);
   Float t = (target.z - r.o.z) / r.d.z;
-  expectNear(r(t), target, 1e-4f);
+  test::expectNear(r(t), target, 1e-4f);
 }
 
 TEST(PerspectiveCamera, RasterXRightAndYDown) {
@@ -93,8 +78,8 @@ TEST(PerspectiveCamera, RasterXRightAndYDown) {
   auto cam = makeCamera(ParamSet(), lookAt(Point3f(0, 0, 0), Point3f(0, 0, 1), Vector3f(0, 1, 0)),
                         {64, 64});
   Ray right, down;
-  cam->generateRay(at(60, 32), &right);
-  cam->generateRay(at(32, 60), &down);
+  cam->generateRay(test::cameraSample(60, 32), &right);
+  cam->generateRay(test::cameraSample(32, 60), &down);
   EXPECT_GT(right.d.x, 0.1f);
   EXPECT_NEAR(right.d.y, 0, 1e-6);
   EXPECT_LT(down.d.y, -0.1f);
@@ -102,8 +87,8 @@ TEST(PerspectiveCamera, RasterXRightAndYDown) {
   // A general LookAt: looking along +x with +z up, image right is cross(up, view) = +y.
   auto cam2 = makeCamera(ParamSet(), lookAt(Point3f(1, 2, 3), Point3f(4, 2, 3), Vector3f(0, 0, 1)),
                          {64, 64});
-  cam2->generateRay(at(60, 32), &right);
-  cam2->generateRay(at(32, 60), &down);
+  cam2->generateRay(test::cameraSample(60, 32), &right);
+  cam2->generateRay(test::cameraSample(32, 60), &down);
   EXPECT_GT(right.d.y, 0.1f);
   EXPECT_LT(down.d.z, -0.1f);
 }
@@ -111,12 +96,12 @@ TEST(PerspectiveCamera, RasterXRightAndYDown) {
 TEST(PerspectiveCamera, LookAtMapsLookDirectionToPlusZ) {
   Point3f eye(-2, 5, 1), look(3, 0, 7);
   Transform w2c = lookAt(eye, look, Vector3f(0.2f, 1, 0));
-  expectNear(w2c(normalize(look - eye)), Vector3f(0, 0, 1), 1e-6f);
+  test::expectNear(w2c(normalize(look - eye)), Vector3f(0, 0, 1), 1e-6f);
   Point3f p = w2c(look);
   EXPECT_NEAR(p.x, 0, 1e-5);
   EXPECT_NEAR(p.y, 0, 1e-5);
   EXPECT_NEAR(p.z, distance(eye, look), 1e-5);
-  expectNear(w2c(eye), Point3f(0, 0, 0), 1e-5f);
+  test::expectNear(w2c(eye), Point3f(0, 0, 0), 1e-5f);
 }
 
 TEST(PerspectiveCamera, ThinLensRaysConvergeAtTheFocalDistance) {
@@ -129,7 +114,7 @@ TEST(PerspectiveCamera, ThinLensRaysConvergeAtTheFocalDistance) {
   Transform w2c = lookAt(eye, look, Vector3f(0, 1, 0));
   auto cam = makeCamera(ps, w2c, {80, 60});
   for (Point2f film : {Point2f(40, 30), Point2f(3.5f, 57.25f), Point2f(77, 2)}) {
-    CameraSample s = at(film.x, film.y);
+    CameraSample s = test::cameraSample(film.x, film.y);
     s.pLens = Point2f(0.5f, 0.5f);  // the lens centre: the pinhole ray
     Ray centre;
     cam->generateRay(s, &centre);
@@ -142,7 +127,7 @@ TEST(PerspectiveCamera, ThinLensRaysConvergeAtTheFocalDistance) {
       cam->generateRay(s, &r);
       EXPECT_NEAR(r.d.length(), 1, 1e-6);
       Point3f p = r(((eye.z + focal) - r.o.z) / r.d.z);
-      expectNear(p, focus, 2e-5f);
+      test::expectNear(p, focus, 2e-5f);
       spread = std::max(spread, distance(r.o, centre.o));
     }
     EXPECT_GT(spread, 0.1f);  // the rays really start across the lens
@@ -160,7 +145,7 @@ TEST(PerspectiveCamera, ClippingPlanesAndShutter) {
   // still reach the yon plane.
   Transform w2c = scale(0.5f, 0.5f, 0.5f) * translate(Vector3f(0, 0, -1));
   auto cam = makeCamera(ps, w2c, {100, 100});
-  CameraSample s = at(10, 80);
+  CameraSample s = test::cameraSample(10, 80);
   s.time = 0.25f;
   Ray r;
   cam->generateRay(s, &r);
@@ -178,19 +163,19 @@ TEST(PerspectiveCamera, AnalyticDifferentialsMatchFiniteDifferences) {
     ps.add(test::floats("fov", {70}));
     auto cam = makeCamera(ps, lookAt(Point3f(0, 1, -3), Point3f(0.5f, 0, 0), Vector3f(0, 1, 0)),
                           {160, 90});
-    CameraSample s = at(31.25f, 70.5f);
+    CameraSample s = test::cameraSample(31.25f, 70.5f);
     s.pLens = Point2f(0.8f, 0.35f);
     RayDifferential analytic, generic;
     cam->generateRayDifferential(s, &analytic);
     cam->Camera::generateRayDifferential(s, &generic);  // the base class: three generateRays
     ASSERT_TRUE(analytic.hasDifferentials);
     ASSERT_TRUE(generic.hasDifferentials);
-    expectNear(analytic.o, generic.o, 1e-6f);
-    expectNear(analytic.d, generic.d, 1e-6f);
-    expectNear(analytic.rxOrigin, generic.rxOrigin, 1e-5f);
-    expectNear(analytic.ryOrigin, generic.ryOrigin, 1e-5f);
-    expectNear(analytic.rxDirection, generic.rxDirection, 1e-5f);
-    expectNear(analytic.ryDirection, generic.ryDirection, 1e-5f);
+    test::expectNear(analytic.o, generic.o, 1e-6f);
+    test::expectNear(analytic.d, generic.d, 1e-6f);
+    test::expectNear(analytic.rxOrigin, generic.rxOrigin, 1e-5f);
+    test::expectNear(analytic.ryOrigin, generic.ryOrigin, 1e-5f);
+    test::expectNear(analytic.rxDirection, generic.rxDirection, 1e-5f);
+    test::expectNear(analytic.ryDirection, generic.ryDirection, 1e-5f);
     // One pixel is a small but nonzero angle.
     Float ax = angleBetween(analytic.d, analytic.rxDirection);
     EXPECT_GT(ax, 1e-4f);
@@ -204,16 +189,16 @@ TEST(PerspectiveCamera, ScreenWindowAndFrameAspectRatio) {
   ps.add(test::floats("screenwindow", {0, 1, 0, 1}));
   auto cam = makeCamera(ps, Transform(), {50, 50});
   Ray r;
-  cam->generateRay(at(0, 50), &r);
-  expectNear(r.d, Vector3f(0, 0, 1), 1e-6f);
+  cam->generateRay(test::cameraSample(0, 50), &r);
+  test::expectNear(r.d, Vector3f(0, 0, 1), 1e-6f);
   // frameaspectratio 2 on a square image: the horizontal extent is doubled.
   ParamSet fa;
   fa.add(test::floats("frameaspectratio", {2}));
   fa.add(test::floats("fov", {90}));
   cam = makeCamera(fa, Transform(), {50, 50});
-  cam->generateRay(at(0, 25), &r);
+  cam->generateRay(test::cameraSample(0, 25), &r);
   EXPECT_NEAR(-r.d.x / r.d.z, 2, 1e-5);
-  cam->generateRay(at(25, 0), &r);
+  cam->generateRay(test::cameraSample(25, 0), &r);
   EXPECT_NEAR(r.d.y / r.d.z, 1, 1e-5);
   EXPECT_EQ(defaultScreenWindow(0.5f).pMax.y, 2.f);
 }

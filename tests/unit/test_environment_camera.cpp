@@ -7,25 +7,14 @@
 #include "cameras/camera.h"
 #include "cameras/environment_camera.h"
 #include "core/rng.h"
+#include "support/geometry_expect.h"
 #include "support/param_items.h"
 
 namespace candela {
 namespace {
 
-CameraSample at(Float x, Float y) {
-  CameraSample s;
-  s.pFilm = Point2f(x, y);
-  return s;
-}
-
 std::unique_ptr<Camera> makeEnv(const ParamSet& ps, const Transform& worldToCamera, Point2i res) {
   return createCamera("environment", ps, inverse(worldToCamera), res, FileLoc{"e.pbrt", 1, 1});
-}
-
-void expectNear(const Vector3f& a, const Vector3f& b, Float tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
 }
 
 TEST(EnvironmentCamera, PixelToSphericalCoordinatesClosedForm) {
@@ -35,7 +24,7 @@ TEST(EnvironmentCamera, PixelToSphericalCoordinatesClosedForm) {
   for (int i = 0; i < 2000; ++i) {
     Float x = rng.uniformFloat() * w, y = rng.uniformFloat() * h;
     Ray r;
-    ASSERT_EQ(cam->generateRay(at(x, y), &r), 1.f);
+    ASSERT_EQ(cam->generateRay(test::cameraSample(x, y), &r), 1.f);
     ASSERT_NEAR(r.d.length(), 1, 1e-6);
     // Back from the direction: theta from +y, phi from +x towards +z.
     double theta = std::acos(std::clamp(double(r.d.y), -1.0, 1.0));
@@ -65,8 +54,8 @@ TEST(EnvironmentCamera, AxesFollowPbrtV2) {
                  Case{{300, 100}, {0, 0, -1}},                      // three quarters: -z
                  Case{{50, 50}, {0.5f, std::sqrt(0.5f), 0.5f}}}) {  // theta = phi = pi/4
     Ray r;
-    cam->generateRay(at(c.raster.x, c.raster.y), &r);
-    expectNear(r.d, c.dir, 1e-6f);
+    cam->generateRay(test::cameraSample(c.raster.x, c.raster.y), &r);
+    test::expectNear(r.d, c.dir, 1e-6f);
   }
 }
 
@@ -80,38 +69,38 @@ TEST(EnvironmentCamera, OriginClippingSpheresAndCameraTransform) {
   // Camera looking along world +x with +z up: camera +y (the top row) is world +z.
   Transform w2c = lookAt(eye, eye + Vector3f(1, 0, 0), Vector3f(0, 0, 1));
   auto cam = makeEnv(ps, w2c, {64, 32});
-  CameraSample s = at(20, 0);
+  CameraSample s = test::cameraSample(20, 0);
   s.time = 0.5f;
   Ray r;
   cam->generateRay(s, &r);
-  expectNear(r.d, Vector3f(0, 0, 1), 1e-6f);
+  test::expectNear(r.d, Vector3f(0, 0, 1), 1e-6f);
   EXPECT_FLOAT_EQ(r.time, 3);
   // Rays start on the hither sphere and end on the yon sphere around the camera's position.
   for (Point2f p : {Point2f(5, 7), Point2f(40, 30), Point2f(63, 16)}) {
-    cam->generateRay(at(p.x, p.y), &r);
+    cam->generateRay(test::cameraSample(p.x, p.y), &r);
     EXPECT_NEAR(distance(r.o, eye), 0.5f, 1e-5);
     EXPECT_NEAR(distance(r(r.tMax), eye), 10, 1e-4);
     // The origin lies along the ray's own direction from the eye.
-    expectNear(normalize(r.o - eye), r.d, 1e-5f);
+    test::expectNear(normalize(r.o - eye), r.d, 1e-5f);
   }
   // A scaling cameraToWorld scales the clipping radii with it; directions stay unit length.
   auto scaled = makeEnv(ps, scale(0.5f, 0.5f, 0.5f), {64, 32});
-  scaled->generateRay(at(10, 10), &r);
+  scaled->generateRay(test::cameraSample(10, 10), &r);
   EXPECT_NEAR(r.d.length(), 1, 1e-6);
   EXPECT_NEAR(distance(r.o, Point3f(0, 0, 0)), 1, 1e-5);
 }
 
 TEST(EnvironmentCamera, DifferentialsAreTheNeighbouringPixelsDirections) {
   auto cam = makeEnv(ParamSet(), Transform(), {100, 50});
-  CameraSample s = at(30.5f, 20.25f);
+  CameraSample s = test::cameraSample(30.5f, 20.25f);
   RayDifferential rd;
   cam->generateRayDifferential(s, &rd);
   ASSERT_TRUE(rd.hasDifferentials);
   Ray rx, ry;
-  cam->generateRay(at(31.5f, 20.25f), &rx);
-  cam->generateRay(at(30.5f, 21.25f), &ry);
-  expectNear(rd.rxDirection, rx.d, 1e-6f);
-  expectNear(rd.ryDirection, ry.d, 1e-6f);
+  cam->generateRay(test::cameraSample(31.5f, 20.25f), &rx);
+  cam->generateRay(test::cameraSample(30.5f, 21.25f), &ry);
+  test::expectNear(rd.rxDirection, rx.d, 1e-6f);
+  test::expectNear(rd.ryDirection, ry.d, 1e-6f);
   // One pixel down is pi/50 of latitude.
   EXPECT_NEAR(std::acos(dot(rd.d, rd.ryDirection)), M_PI / 50, 1e-4);
 }

@@ -7,29 +7,14 @@
 
 #include "cameras/camera.h"
 #include "cameras/orthographic_camera.h"
+#include "support/geometry_expect.h"
 #include "support/param_items.h"
 
 namespace candela {
 namespace {
 
-CameraSample at(Float x, Float y, Point2f lens = Point2f(0.5f, 0.5f)) {
-  CameraSample s;
-  s.pFilm = Point2f(x, y);
-  s.pLens = lens;
-  return s;
-}
-
 std::unique_ptr<Camera> makeOrtho(const ParamSet& ps, const Transform& worldToCamera, Point2i res) {
   return createCamera("orthographic", ps, inverse(worldToCamera), res, FileLoc{"o.pbrt", 1, 1});
-}
-
-void expectNear(const Vector3f& a, const Vector3f& b, Float tol) {
-  EXPECT_NEAR(a.x, b.x, tol);
-  EXPECT_NEAR(a.y, b.y, tol);
-  EXPECT_NEAR(a.z, b.z, tol);
-}
-void expectNear(const Point3f& a, const Point3f& b, Float tol) {
-  expectNear(Vector3f(a), Vector3f(b), tol);
 }
 
 TEST(OrthographicCamera, EveryRayRunsAlongTheViewDirection) {
@@ -39,11 +24,11 @@ TEST(OrthographicCamera, EveryRayRunsAlongTheViewDirection) {
   Vector3f view = normalize(look - eye);
   for (Point2f p : {Point2f(0, 0), Point2f(32, 24), Point2f(63.5f, 1.25f), Point2f(7, 47.9f)}) {
     Ray r;
-    EXPECT_EQ(cam->generateRay(at(p.x, p.y), &r), 1.f);
-    expectNear(r.d, view, 1e-6f);
+    EXPECT_EQ(cam->generateRay(test::cameraSample(p.x, p.y), &r), 1.f);
+    test::expectNear(r.d, view, 1e-6f);
     EXPECT_NEAR(r.d.length(), 1, 1e-6);
     // In camera space the direction is exactly +z.
-    expectNear(w2c(r.d), Vector3f(0, 0, 1), 1e-6f);
+    test::expectNear(w2c(r.d), Vector3f(0, 0, 1), 1e-6f);
   }
 }
 
@@ -59,8 +44,8 @@ TEST(OrthographicCamera, RasterMapsOntoTheScreenWindow) {
   for (Case c : {Case{{0, 0}, {-2, 1}}, Case{{200, 100}, {2, -1}}, Case{{100, 50}, {0, 0}},
                  Case{{150, 25}, {1, 0.5f}}, Case{{12.5f, 80}, {-1.75f, -0.6f}}}) {
     Ray r;
-    cam->generateRay(at(c.raster.x, c.raster.y), &r);
-    expectNear(r.o, Point3f(c.screen.x, c.screen.y, 1e-3f), 1e-6f);
+    cam->generateRay(test::cameraSample(c.raster.x, c.raster.y), &r);
+    test::expectNear(r.o, Point3f(c.screen.x, c.screen.y, 1e-3f), 1e-6f);
     auto& ortho = dynamic_cast<OrthographicCamera&>(*cam);
     Point2f s = ortho.rasterToScreen(c.raster);
     EXPECT_NEAR(s.x, c.screen.x, 1e-6);
@@ -71,8 +56,9 @@ TEST(OrthographicCamera, RasterMapsOntoTheScreenWindow) {
   ps.add(test::floats("screenwindow", {-3, 5, 10, 12}));
   cam = makeOrtho(ps, Transform(), {40, 80});
   Ray r;
-  cam->generateRay(at(10, 60), &r);  // x: -3 + 8 * 10/40 = -1; y: 12 - 2 * 60/80 = 10.5
-  expectNear(r.o, Point3f(-1, 10.5f, 1e-3f), 1e-5f);
+  cam->generateRay(test::cameraSample(10, 60),
+                   &r);  // x: -3 + 8 * 10/40 = -1; y: 12 - 2 * 60/80 = 10.5
+  test::expectNear(r.o, Point3f(-1, 10.5f, 1e-3f), 1e-5f);
 }
 
 TEST(OrthographicCamera, ClippingPlanesAndShutter) {
@@ -83,7 +69,7 @@ TEST(OrthographicCamera, ClippingPlanesAndShutter) {
   ps.add(test::floats("shutterclose", {1.5f}));
   Transform w2c = scale(2, 2, 2) * translate(Vector3f(1, 0, 0));
   auto cam = makeOrtho(ps, w2c, {10, 10});
-  CameraSample s = at(3, 4);
+  CameraSample s = test::cameraSample(3, 4);
   s.time = 0.75f;
   Ray r;
   cam->generateRay(s, &r);
@@ -109,10 +95,10 @@ TEST(OrthographicCamera, PointsOnTheFocalPlaneStaySharp) {
     for (Point2f u : {Point2f(0.1f, 0.2f), Point2f(0.9f, 0.5f), Point2f(0.3f, 0.95f),
                       Point2f(0.01f, 0.01f), Point2f(0.5f, 0.5f)}) {
       Ray r;
-      cam->generateRay(at(film.x, film.y, u), &r);
+      cam->generateRay(test::cameraSample(film.x, film.y, u), &r);
       EXPECT_NEAR(r.d.length(), 1, 1e-6);
       Point3f p = r((focal - r.o.z) / r.d.z);
-      expectNear(p, Point3f(screen.x, screen.y, focal), 2e-5f);
+      test::expectNear(p, Point3f(screen.x, screen.y, focal), 2e-5f);
       Float offAxis = std::hypot(r.o.x - screen.x, r.o.y - screen.y);
       EXPECT_LE(offAxis, lens + 1e-3f);
       spread = std::max(spread, offAxis);
@@ -121,8 +107,8 @@ TEST(OrthographicCamera, PointsOnTheFocalPlaneStaySharp) {
   }
   // Off the focal plane, a point is blurred: rays through different lens points miss each other.
   Ray a, b;
-  cam->generateRay(at(40, 40, Point2f(0.1f, 0.5f)), &a);
-  cam->generateRay(at(40, 40, Point2f(0.9f, 0.5f)), &b);
+  cam->generateRay(test::cameraSample(40, 40, Point2f(0.1f, 0.5f)), &a);
+  cam->generateRay(test::cameraSample(40, 40, Point2f(0.9f, 0.5f)), &b);
   Float z = 2 * focal;
   EXPECT_GT(distance(a((z - a.o.z) / a.d.z), b((z - b.o.z) / b.d.z)), 0.3f);
 }
@@ -134,20 +120,20 @@ TEST(OrthographicCamera, AnalyticDifferentialsMatchFiniteDifferences) {
     ps.add(test::floats("focaldistance", {4}));
     auto cam =
         makeOrtho(ps, lookAt(Point3f(0, 1, -3), Point3f(0.5f, 0, 0), Vector3f(0, 1, 0)), {160, 90});
-    CameraSample s = at(31.25f, 70.5f, Point2f(0.8f, 0.35f));
+    CameraSample s = test::cameraSample(31.25f, 70.5f, Point2f(0.8f, 0.35f));
     RayDifferential analytic, generic;
     cam->generateRayDifferential(s, &analytic);
     cam->Camera::generateRayDifferential(s, &generic);
     ASSERT_TRUE(analytic.hasDifferentials);
-    expectNear(analytic.o, generic.o, 1e-6f);
-    expectNear(analytic.d, generic.d, 1e-6f);
-    expectNear(analytic.rxOrigin, generic.rxOrigin, 1e-5f);
-    expectNear(analytic.ryOrigin, generic.ryOrigin, 1e-5f);
-    expectNear(analytic.rxDirection, generic.rxDirection, 1e-5f);
-    expectNear(analytic.ryDirection, generic.ryDirection, 1e-5f);
+    test::expectNear(analytic.o, generic.o, 1e-6f);
+    test::expectNear(analytic.d, generic.d, 1e-6f);
+    test::expectNear(analytic.rxOrigin, generic.rxOrigin, 1e-5f);
+    test::expectNear(analytic.ryOrigin, generic.ryOrigin, 1e-5f);
+    test::expectNear(analytic.rxDirection, generic.rxDirection, 1e-5f);
+    test::expectNear(analytic.ryDirection, generic.ryDirection, 1e-5f);
     if (lens == 0) {
       // A pinhole orthographic camera's offset rays are parallel, one pixel (2/90) apart.
-      expectNear(analytic.rxDirection, analytic.d, 1e-6f);
+      test::expectNear(analytic.rxDirection, analytic.d, 1e-6f);
       EXPECT_NEAR(distance(analytic.rxOrigin, analytic.o), 2.f / 90, 1e-5);
       EXPECT_NEAR(distance(analytic.ryOrigin, analytic.o), 2.f / 90, 1e-5);
     }

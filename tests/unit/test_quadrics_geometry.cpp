@@ -6,6 +6,7 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "quadric_models.h"
+#include "support/geometry_expect.h"
 #include "support/param_items.h"
 
 namespace candela {
@@ -13,12 +14,6 @@ namespace {
 
 using test::D3;
 using test::QuadricModel;
-
-void expectNear(const Vector3f& a, const Vector3f& b, Float tol) {
-  EXPECT_NEAR(a.x, b.x, tol) << a << " vs " << b;
-  EXPECT_NEAR(a.y, b.y, tol) << a << " vs " << b;
-  EXPECT_NEAR(a.z, b.z, tol) << a << " vs " << b;
-}
 
 Vector3f toVec(const D3& v) { return Vector3f(Float(v[0]), Float(v[1]), Float(v[2])); }
 
@@ -84,10 +79,10 @@ TEST(Quadrics, AnalyticHits) {
   CylinderShape cyl(Transform(), false, 2, -1, 1, 360);
   ASSERT_TRUE(cyl.intersect(Ray(Point3f(5, 0, 0.5f), Vector3f(-1, 0, 0)), &t, &si));
   EXPECT_NEAR(t, 3, 1e-6);
-  expectNear(Vector3f(si.n), Vector3f(1, 0, 0), 1e-5f);
+  test::expectNear(Vector3f(si.n), Vector3f(1, 0, 0), 1e-5f);
   ASSERT_TRUE(cyl.intersect(Ray(Point3f(0, 0, 0), Vector3f(0, 1, 0)), &t, &si));
   EXPECT_NEAR(t, 2, 1e-6);
-  expectNear(Vector3f(si.n), Vector3f(0, 1, 0), 1e-5f);
+  test::expectNear(Vector3f(si.n), Vector3f(0, 1, 0), 1e-5f);
   EXPECT_FALSE(cyl.intersectP(Ray(Point3f(0, 0, 5), Vector3f(0, 0, -1))));     // along the axis
   EXPECT_FALSE(cyl.intersectP(Ray(Point3f(5, 0, 1.5f), Vector3f(-1, 0, 0))));  // above zmax
 
@@ -95,7 +90,7 @@ TEST(Quadrics, AnalyticHits) {
   DiskShape disk(Transform(), false, 1, 2, 0.5f, 360);
   ASSERT_TRUE(disk.intersect(Ray(Point3f(0.5f, 0.5f, 5), Vector3f(0, 0, -1)), &t, &si));
   EXPECT_NEAR(t, 4, 1e-6);
-  expectNear(Vector3f(si.n), Vector3f(0, 0, 1), 1e-6f);
+  test::expectNear(Vector3f(si.n), Vector3f(0, 0, 1), 1e-6f);
   EXPECT_FALSE(disk.intersectP(Ray(Point3f(0.2f, 0, 5), Vector3f(0, 0, -1))));
   EXPECT_FALSE(disk.intersectP(Ray(Point3f(2.1f, 0, 5), Vector3f(0, 0, -1))));
   EXPECT_FALSE(disk.intersectP(Ray(Point3f(0, 0, 1), Vector3f(1, 0, 0))));  // in its plane
@@ -104,7 +99,7 @@ TEST(Quadrics, AnalyticHits) {
   ConeShape cone(Transform(), false, 2, 1, 360);
   ASSERT_TRUE(cone.intersect(Ray(Point3f(5, 0, 1), Vector3f(-1, 0, 0)), &t, &si));
   EXPECT_NEAR(t, 4.5f, 1e-6);
-  expectNear(Vector3f(si.n), Vector3f(2, 0, 1) / std::sqrt(5.f), 1e-5f);
+  test::expectNear(Vector3f(si.n), Vector3f(2, 0, 1) / std::sqrt(5.f), 1e-5f);
   EXPECT_NEAR(si.uv.y, 0.5f, 1e-6);
   EXPECT_FALSE(cone.intersectP(Ray(Point3f(5, 0, 2.5f), Vector3f(-1, 0, 0))));  // other nappe
 
@@ -112,14 +107,14 @@ TEST(Quadrics, AnalyticHits) {
   ParaboloidShape par(Transform(), false, 1, 0, 1, 360);
   ASSERT_TRUE(par.intersect(Ray(Point3f(5, 0, 0.25f), Vector3f(-1, 0, 0)), &t, &si));
   EXPECT_NEAR(t, 4.5f, 1e-6);
-  expectNear(Vector3f(si.n), Vector3f(1, 0, -1) / std::sqrt(2.f), 1e-5f);
+  test::expectNear(Vector3f(si.n), Vector3f(1, 0, -1) / std::sqrt(2.f), 1e-5f);
 
   // Hyperboloid p1 = (1, 0, -1), p2 = (0, 1, 1): at z = 0 the segment point is (0.5, 0.5, 0),
   // radius sqrt(1/2), the waist, where the normal is radial.
   HyperboloidShape hyp(Transform(), false, Point3f(1, 0, -1), Point3f(0, 1, 1), 360);
   ASSERT_TRUE(hyp.intersect(Ray(Point3f(5, 0, 0), Vector3f(-1, 0, 0)), &t, &si));
   EXPECT_NEAR(t, 5 - std::sqrt(0.5f), 1e-6);
-  expectNear(Vector3f(si.n), Vector3f(1, 0, 0), 1e-5f);
+  test::expectNear(Vector3f(si.n), Vector3f(1, 0, 0), 1e-5f);
   EXPECT_NEAR(si.uv.y, 0.5f, 1e-6);
   // (0.5, 0.5) turned to (sqrt(1/2), 0) is a rotation by -45 degrees, i.e. 315 degrees.
   EXPECT_NEAR(si.uv.x, 315.f / 360, 1e-5);
@@ -233,13 +228,13 @@ TEST(Quadrics, DifferentialGeometryMatchesModel) {
         EXPECT_NEAR(si.uv.y, v, 1e-4) << where;
         D3 pw = worldPoint(t, m.P(u, v));
         Float scale = Float(m.size * 4);
-        expectNear(Vector3f(si.p), toVec(pw), 1e-5f * scale);
+        test::expectNear(Vector3f(si.p), toVec(pw), 1e-5f * scale);
         // Outward normal and the tangents of the parameterisation.
         EXPECT_GT(dot(si.n, toVec(worldOutward(m, t, u, v))), 0.9999f) << where;
         Vector3f dpdu = toVec(worldVector(t, m.dPdu(u, v))),
                  dpdv = toVec(worldVector(t, m.dPdv(u, v)));
-        expectNear(si.dpdu, dpdu, 1e-4f * std::max(Float(1), dpdu.length()));
-        expectNear(si.dpdv, dpdv, 1e-4f * std::max(Float(1), dpdv.length()));
+        test::expectNear(si.dpdu, dpdu, 1e-4f * std::max(Float(1), dpdu.length()));
+        test::expectNear(si.dpdv, dpdv, 1e-4f * std::max(Float(1), dpdv.length()));
       }
     }
   }
@@ -268,8 +263,8 @@ TEST(Quadrics, NormalDerivativesMatchFiniteDifferences) {
         Float tolV = 2e-3f * std::max(Float(1), Float(test::lenD(dndv)));
         std::string where = m.name + " at (" + std::to_string(u) + ", " + std::to_string(v) + ")";
         SCOPED_TRACE(where);
-        expectNear(Vector3f(si.dndu), toVec(dndu), tolU);
-        expectNear(Vector3f(si.dndv), toVec(dndv), tolV);
+        test::expectNear(Vector3f(si.dndu), toVec(dndu), tolU);
+        test::expectNear(Vector3f(si.dndv), toVec(dndv), tolV);
       }
     }
   }
@@ -319,7 +314,7 @@ TEST(Quadrics, SingularPointsAreFinite) {
   DiskShape disk(Transform(), false, 0, 1, 0, 360);
   ASSERT_TRUE(disk.intersect(Ray(Point3f(0, 0, 1), Vector3f(0, 0, -1)), &t, &si));
   expectFinite(si, "disk centre");
-  expectNear(Vector3f(si.n), Vector3f(0, 0, 1), 1e-6f);
+  test::expectNear(Vector3f(si.n), Vector3f(0, 0, 1), 1e-6f);
   EXPECT_NEAR(si.uv.y, 1, 1e-6);
   ConeShape cone(Transform(), false, 1, 1, 360);
   ASSERT_TRUE(cone.intersect(Ray(Point3f(0, 0, 3), Vector3f(0, 0.001f, -1)), &t, &si));
@@ -330,7 +325,7 @@ TEST(Quadrics, SingularPointsAreFinite) {
   ParaboloidShape par(Transform(), false, 1, 0, 1, 360);
   ASSERT_TRUE(par.intersect(Ray(Point3f(0, 0, -1), Vector3f(0, 0, 1)), &t, &si));
   expectFinite(si, "paraboloid apex");
-  expectNear(Vector3f(si.n), Vector3f(0, 0, -1), 1e-4f);
+  test::expectNear(Vector3f(si.n), Vector3f(0, 0, -1), 1e-4f);
   HyperboloidShape hyp(Transform(), false, Point3f(1, 0, -1), Point3f(-1, 0, 1), 360);
   ASSERT_TRUE(hyp.intersect(Ray(Point3f(-3, 0, 0), Vector3f(1, 0, 0)), &t, &si));
   EXPECT_NEAR(si.p.x, 0, 1e-6);

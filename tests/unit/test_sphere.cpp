@@ -5,17 +5,12 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "shapes/sphere.h"
+#include "support/geometry_expect.h"
 #include "support/param_items.h"
 #include "support/random_geometry.h"
 
 namespace candela {
 namespace {
-
-void expectNear(const Vector3f& a, const Vector3f& b, Float tol) {
-  EXPECT_NEAR(a.x, b.x, tol) << a << " vs " << b;
-  EXPECT_NEAR(a.y, b.y, tol) << a << " vs " << b;
-  EXPECT_NEAR(a.z, b.z, tol) << a << " vs " << b;
-}
 
 TEST(SphereShape, HitThroughCentre) {
   SphereShape s(Transform(), false, 1, -1, 1, 360);
@@ -24,8 +19,8 @@ TEST(SphereShape, HitThroughCentre) {
   SurfaceInteraction isect;
   ASSERT_TRUE(s.intersect(ray, &t, &isect));
   EXPECT_NEAR(t, 4, 1e-6);
-  expectNear(Vector3f(isect.p), Vector3f(0, 0, -1), 1e-5f);
-  expectNear(Vector3f(isect.n), Vector3f(0, 0, -1), 1e-4f);
+  test::expectNear(Vector3f(isect.p), Vector3f(0, 0, -1), 1e-5f);
+  test::expectNear(Vector3f(isect.n), Vector3f(0, 0, -1), 1e-4f);
   // The same for a translated sphere and oblique rays: t = |o - c| - r.
   Transform o2w = translate(Vector3f(3, -2, 7));
   SphereShape moved(o2w, false, 2.5f, -2.5f, 2.5f, 360);
@@ -98,12 +93,12 @@ TEST(SphereShape, DifferentialGeometry) {
     ++hits;
     Vector3f p(isect.p);
     EXPECT_NEAR(p.length(), r, 1e-5f);
-    expectNear(Vector3f(isect.n), p / r, 1e-4f);
+    test::expectNear(Vector3f(isect.n), p / r, 1e-4f);
     // Tangents lie in the tangent plane; for a sphere dn/du = dp/du / r (Weingarten).
     EXPECT_NEAR(dot(isect.dpdu, isect.n), 0, 1e-4f * isect.dpdu.length());
     EXPECT_NEAR(dot(isect.dpdv, isect.n), 0, 1e-4f * isect.dpdv.length());
-    expectNear(Vector3f(isect.dndu), isect.dpdu / r, 1e-3f * isect.dpdu.length());
-    expectNear(Vector3f(isect.dndv), isect.dpdv / r, 1e-3f * isect.dpdv.length());
+    test::expectNear(Vector3f(isect.dndu), isect.dpdu / r, 1e-3f * isect.dpdu.length());
+    test::expectNear(Vector3f(isect.dndv), isect.dpdv / r, 1e-3f * isect.dpdv.length());
     // (u, v): phi / 2 pi and theta from the bottom.
     Float phi = std::atan2(p.y, p.x);
     if (phi < 0) phi += 2 * kPi;
@@ -142,7 +137,7 @@ TEST(SphereShape, ReverseOrientationFlipsNormal) {
   Float t;
   SurfaceInteraction isect;
   ASSERT_TRUE(s.intersect(Ray(Point3f(0, 0, -5), Vector3f(0, 0, 1)), &t, &isect));
-  expectNear(Vector3f(isect.n), Vector3f(0, 0, 1), 1e-4f);  // inward
+  test::expectNear(Vector3f(isect.n), Vector3f(0, 0, 1), 1e-4f);  // inward
   Float pdf;
   Interaction it = s.sample(Point2f(0.3f, 0.6f), &pdf);
   EXPECT_LT(dot(it.n, Vector3f(it.p)), 0);

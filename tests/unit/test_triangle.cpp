@@ -8,16 +8,11 @@
 
 #include "core/rng.h"
 #include "shapes/triangle_mesh.h"
+#include "support/geometry_expect.h"
 #include "support/param_items.h"
 
 namespace candela {
 namespace {
-
-void expectNear(const Vector3f& a, const Vector3f& b, Float tol) {
-  EXPECT_NEAR(a.x, b.x, tol) << a << " vs " << b;
-  EXPECT_NEAR(a.y, b.y, tol) << a << " vs " << b;
-  EXPECT_NEAR(a.z, b.z, tol) << a << " vs " << b;
-}
 
 TriangleMesh unitTriangle(const Transform& t = Transform(), bool reverse = false,
                           std::vector<Normal3f> n = {}, std::vector<Vector3f> s = {},
@@ -33,14 +28,14 @@ TEST(TriangleShape, BarycentricsNormalAndDefaultUV) {
   SurfaceInteraction isect;
   ASSERT_TRUE(tri.intersect(Ray(Point3f(0.2f, 0.3f, 1), Vector3f(0, 0, -1)), &t, &isect));
   EXPECT_NEAR(t, 1, 1e-6);
-  expectNear(Vector3f(isect.p), Vector3f(0.2f, 0.3f, 0), 1e-6f);
-  expectNear(Vector3f(isect.n), Vector3f(0, 0, 1), 1e-6f);  // counter-clockwise winding
-  expectNear(Vector3f(isect.shading.n), Vector3f(0, 0, 1), 1e-6f);
+  test::expectNear(Vector3f(isect.p), Vector3f(0.2f, 0.3f, 0), 1e-6f);
+  test::expectNear(Vector3f(isect.n), Vector3f(0, 0, 1), 1e-6f);  // counter-clockwise winding
+  test::expectNear(Vector3f(isect.shading.n), Vector3f(0, 0, 1), 1e-6f);
   // Default (u, v) at the vertices (0,0), (1,0), (1,1): b1 + b2, b2 with b1 = 0.2, b2 = 0.3.
   EXPECT_NEAR(isect.uv.x, 0.5f, 1e-6);
   EXPECT_NEAR(isect.uv.y, 0.3f, 1e-6);
-  expectNear(isect.dpdu, Vector3f(1, 0, 0), 1e-6f);
-  expectNear(isect.dpdv, Vector3f(-1, 1, 0), 1e-6f);
+  test::expectNear(isect.dpdu, Vector3f(1, 0, 0), 1e-6f);
+  test::expectNear(isect.dpdv, Vector3f(-1, 1, 0), 1e-6f);
   EXPECT_GT(isect.pError.x + isect.pError.y, 0);
   // Two-sided: from below too, same normal.
   ASSERT_TRUE(tri.intersect(Ray(Point3f(0.2f, 0.3f, -2), Vector3f(0, 0, 1)), &t, &isect));
@@ -50,8 +45,8 @@ TEST(TriangleShape, BarycentricsNormalAndDefaultUV) {
   // interactionAt, as Embree's hits use it, agrees with intersect.
   SurfaceInteraction again =
       tri.interactionAt(Ray(Point3f(0.2f, 0.3f, -2), Vector3f(0, 0, 1)), 0.2f, 0.3f, 2);
-  expectNear(Vector3f(again.p), Vector3f(isect.p), 1e-6f);
-  expectNear(again.dpdu, isect.dpdu, 1e-6f);
+  test::expectNear(Vector3f(again.p), Vector3f(isect.p), 1e-6f);
+  test::expectNear(again.dpdu, isect.dpdu, 1e-6f);
 }
 
 TEST(TriangleShape, Misses) {
@@ -77,8 +72,8 @@ TEST(TriangleShape, VertexUVsGiveTangents) {
   Float t;
   SurfaceInteraction isect;
   ASSERT_TRUE(tri.intersect(Ray(Point3f(0.5f, 1, 3), Vector3f(0, 0, -1)), &t, &isect));
-  expectNear(isect.dpdu, Vector3f(2, 0, 0), 1e-5f);
-  expectNear(isect.dpdv, Vector3f(0, 4, 0), 1e-5f);
+  test::expectNear(isect.dpdu, Vector3f(2, 0, 0), 1e-5f);
+  test::expectNear(isect.dpdv, Vector3f(0, 4, 0), 1e-5f);
   EXPECT_NEAR(isect.uv.x, 0.25f, 1e-6);
   EXPECT_NEAR(isect.uv.y, 0.25f, 1e-6);
 }
@@ -124,7 +119,7 @@ TEST(TriangleShape, Orientation) {
     TriangleMesh mesh = unitTriangle(Transform(), false, n);
     ASSERT_TRUE(TriangleShape(&mesh, 0).intersect(down, &t, &isect));
     EXPECT_NEAR(isect.n.z, -1, 1e-6);
-    expectNear(Vector3f(isect.shading.n), normalize(Vector3f(0.1f, 0, -1)), 1e-5f);
+    test::expectNear(Vector3f(isect.shading.n), normalize(Vector3f(0.1f, 0, -1)), 1e-5f);
     // ReverseOrientation flips the given normals, and with them the surface.
     TriangleMesh reversed = unitTriangle(Transform(), true, n);
     ASSERT_TRUE(TriangleShape(&reversed, 0).intersect(down, &t, &isect));
@@ -142,15 +137,15 @@ TEST(TriangleShape, ShadingFrame) {
   ASSERT_TRUE(tri.intersect(Ray(Point3f(0.25f, 0.25f, 1), Vector3f(0, 0, -1)), &t, &isect));
   // ns = normalize(0.5 n0 + 0.25 n1 + 0.25 n2).
   Vector3f ns = normalize(Vector3f(0.25f, 0.25f, 1));
-  expectNear(Vector3f(isect.shading.n), ns, 1e-5f);
+  test::expectNear(Vector3f(isect.shading.n), ns, 1e-5f);
   // shading dp/du follows S, made perpendicular to ns; the frame is right-handed about ns.
   Vector3f ss = normalize(isect.shading.dpdu);
   EXPECT_NEAR(dot(ss, ns), 0, 1e-5);
   EXPECT_GT(dot(ss, Vector3f(1, 1, 0)), 0.9f);
-  expectNear(normalize(cross(isect.shading.dpdu, isect.shading.dpdv)), ns, 1e-5f);
+  test::expectNear(normalize(cross(isect.shading.dpdu, isect.shading.dpdv)), ns, 1e-5f);
   // dn/du, dn/dv from the normals with the default (u, v): u = b1 + b2, v = b2.
-  expectNear(Vector3f(isect.shading.dndu), Vector3f(1, 0, 0), 1e-5f);
-  expectNear(Vector3f(isect.shading.dndv), Vector3f(-1, 1, 0), 1e-5f);
+  test::expectNear(Vector3f(isect.shading.dndu), Vector3f(1, 0, 0), 1e-5f);
+  test::expectNear(Vector3f(isect.shading.dndv), Vector3f(-1, 1, 0), 1e-5f);
 }
 
 TEST(TriangleShape, SamplingIsUniformOverTheTriangle) {
