@@ -56,12 +56,12 @@ std::vector<std::unique_ptr<Shape>> createLoopSubdivShapes(
   checkCount(uvName, uv.size());
   checkCount("N", n.size());
 
-  // Validation first, for both producers.
-  LoopTopology t = buildLoopTopology(control, params.locationOf("indices", loc), kName);
   std::vector<int> indices;
   std::vector<LoopPoint> p;
   std::vector<Normal3f> limitN;
+  // Each producer validates the control mesh first (errors at "indices", naming the face).
   if (producer == LoopProducer::Book) {
+    LoopTopology t = buildLoopTopology(control, params.locationOf("indices", loc), kName);
     LoopMesh mesh = control;
     for (int level = 0; level < levels; ++level) {
       if (!uv.empty()) uv = refineLinearOnce(uv, t);
