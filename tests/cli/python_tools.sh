@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The Python tools run with what the extras install list brings (python3, python3-matplotlib):
+# the convergence benchmark at a tiny sample count (references through tools/reference.sh, the
+# table and the plots), and the accelerator scaling plot from a small CSV.
+set -euo pipefail
+candela=$1 src=$2 work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+is_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ]; }
+
+CANDELA=$candela CANDELA_CACHE=$work/cache /usr/bin/python3 "$src/benchmarks/convergence.py" \
+  --out "$work/conv" --spp 4 --ref-spp 8 >conv.txt
+for f in conv/convergence.csv conv/convergence.md conv/cornell-box.png conv/spheres.png; do
+  test -s "$f" || { cat conv.txt; echo "FAIL: convergence.py wrote no $f"; exit 1; }
+done
+is_png conv/cornell-box.png || { echo "FAIL: cornell-box.png is not a PNG"; exit 1; }
+[ "$(tail -n +2 conv/convergence.csv | wc -l)" = 8 ] ||
+  { cat conv/convergence.csv; echo "FAIL: expected 8 rows (2 scenes x 4 methods)"; exit 1; }
+
+cat >scaling.csv <<'CSV'
+aggregate,triangles,build_cpu_s,camera_ns_per_ray,bounce_ns_per_ray
+bvh,1000,0.001,300,400
+bvh,10000,0.01,500,700
+embree,1000,0.002,200,250
+embree,10000,0.02,300,350
+CSV
+/usr/bin/python3 "$src/tools/plot_accel_scaling.py" scaling.csv -o scaling.png
+is_png scaling.png || { echo "FAIL: plot_accel_scaling.py wrote no PNG"; exit 1; }
+echo "python tools: ok"
