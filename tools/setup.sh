@@ -82,8 +82,11 @@ build_all() {
     say "CMake configure failed (above; log in $build/setup-configure.log)"
     exit 1
   fi
-  say "building with $jobs jobs (the first build takes about 5 minutes on 2 cores)"
-  cmake --build "$build" -j "$jobs"
+  # render needs only the command; the others build everything (tests, and benchmarks for extras).
+  local target=()
+  [ "$mode" = render ] && target=(--target candela)
+  say "building with $jobs jobs (the first build takes a few minutes on 2 cores)"
+  cmake --build "$build" -j "$jobs" "${target[@]}"
   say "built $build/candela"
 }
 
