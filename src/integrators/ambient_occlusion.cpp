@@ -31,6 +31,7 @@ Spectrum AmbientOcclusionIntegrator::Li(const RayDifferential& ray, const Scene&
   Point2f scramble = ctx.sampler.get2D();
   uint32_t scrambleX = fractionBits(scramble.x), scrambleY = fractionBits(scramble.y);
   int clear = 0;
+  double cosineSum = 0;  // pbrt-v3's estimate: cos / pdf over the clear directions
   for (int i = 0; i < nSamples_; ++i) {
     Point2f u(bitsToUnitFloat(vanDerCorputBits(uint32_t(i), scrambleX)),
               bitsToUnitFloat(sobol2Bits(uint32_t(i), scrambleY)));
@@ -38,8 +39,12 @@ Spectrum AmbientOcclusionIntegrator::Li(const RayDifferential& ray, const Scene&
     Vector3f w = s * local.x + t * local.y + n * local.z;
     Ray probe = isect.spawnRay(w);
     probe.tMax = maxDist_;
-    if (!scene.intersectP(probe, ctx.stats)) ++clear;
+    if (scene.intersectP(probe, ctx.stats)) continue;
+    ++clear;
+    // cos / pdf: pi for cosine-weighted directions, 2 pi cos for uniform ones.
+    cosineSum += cosSample_ ? kPi : 2 * kPi * double(local.z);
   }
+  if (estimate_ == Estimate::UnoccludedCosine) return Spectrum(Float(cosineSum / nSamples_));
   return Spectrum(Float(clear) / Float(nSamples_));
 }
 

@@ -59,8 +59,16 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
     bool cosSample = p.getOneBool("cossample", true);
     return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist, cosSample);
   }
+  if (desc.name == "ao") {
+    // pbrt-v3's AOIntegrator: 64 directions, unbounded probes, the unnormalised cosine integral.
+    int nSamples = p.getOneInt("nsamples", 64);
+    if (nSamples < 1) throw SceneError(p.locationOf("nsamples", desc.loc), "nsamples must be >= 1");
+    bool cosSample = p.getOneBool("cossample", true);
+    return std::make_unique<AmbientOcclusionIntegrator>(
+        nSamples, kInfinity, cosSample, AmbientOcclusionIntegrator::Estimate::UnoccludedCosine);
+  }
   throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
-                     {"ambientocclusion", "directlighting", "path", "whitted"});
+                     {"ambientocclusion", "ao", "directlighting", "path", "whitted"});
 }
 
 }  // namespace candela

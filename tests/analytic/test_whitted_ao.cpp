@@ -1,7 +1,7 @@
-// "whitted" and "ambientocclusion" against closed forms. Whitted's scenes are noiseless (delta
-// lights, perfect specular surfaces, constant backgrounds), so they are checked to float
-// precision; ambient occlusion is a binomial estimate, checked within 4 standard deviations of
-// the sample count.
+// "whitted", "ambientocclusion" and pbrt-v3's "ao" against closed forms. Whitted's scenes are
+// noiseless (delta lights, perfect specular surfaces, constant backgrounds), so they are checked to
+// float precision; ambient occlusion is a binomial estimate, checked within 4 standard deviations
+// of the sample count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -287,8 +287,11 @@ std::string aoHeader(const std::string& lookAt, const std::string& camera, int r
       .append("]\n");
 }
 
-std::string ao(int nSamples, const std::string& extra = "") {
-  return std::string("\"ambientocclusion\" \"integer nsamples\" [")
+std::string ao(int nSamples, const std::string& extra = "",
+               const std::string& name = "ambientocclusion") {
+  return std::string("\"")
+      .append(name)
+      .append("\" \"integer nsamples\" [")
       .append(std::to_string(nSamples))
       .append("] ")
       .append(extra);
@@ -309,7 +312,7 @@ TEST(AmbientOcclusion, OpenPlaneIsExactlyOne) {
 // AO at the floor point a distance h in front of a wall of height H (the plane x = 0, endless
 // along y), seen by a one-pixel orthographic camera straight above it.
 Float aoInFrontOfWall(Float h, Float wallHeight, int nSamples, int pixelSamples,
-                      const std::string& extra = "") {
+                      const std::string& extra = "", const std::string& name = "ambientocclusion") {
   std::string x = std::to_string(-h);
   std::string header =
       aoHeader(std::string(x).append(" 0 5  ").append(x).append(" 0 0  0 1 0"),
@@ -317,7 +320,7 @@ Float aoInFrontOfWall(Float h, Float wallHeight, int nSamples, int pixelSamples,
   std::string top = std::to_string(wallHeight);
   std::string wall = quad(
       std::string("0 -10000 0  0 10000 0  0 10000 ").append(top).append("  0 -10000 ").append(top));
-  auto r = test::renderSceneText(scene(header, ao(nSamples, extra), kFloor + wall));
+  auto r = test::renderSceneText(scene(header, ao(nSamples, extra, name), kFloor + wall));
   return r.film().pixelValue(Point2i(0, 0))[1];
 }
 
@@ -378,6 +381,46 @@ TEST(AmbientOcclusion, UniformDirectionsArePbrtV2s) {
   EXPECT_NEAR(got, expected, 4 * binomialSigma(expected, n));
   double half = aoInFrontOfWall(1, 1e5f, nSamples, pixelSamples, "\"bool cossample\" \"false\"");
   EXPECT_NEAR(half, 0.5, 4 * binomialSigma(0.5, n));
+}
+
+// pbrt-v3's "ao": the integral of cos over the clear directions, pi times the cosine-weighted
+// clear fraction, whichever way the directions are drawn. Open: exactly pi with cosine-weighted
+// directions (each clear one adds cos / pdf = pi).
+TEST(AmbientOcclusionPbrtV3, OpenPlaneIsExactlyPi) {
+  auto r = test::renderSceneText(
+      scene(aoHeader("0 0 3  0 0 0  0 1 0", "\"perspective\" \"float fov\" [60]", 8, 4),
+            ao(64, "", "ao"), kFloor));
+  forEachPixel(r.film(), [&](const Point2i& p) {
+    Spectrum v = r.film().pixelValue(p);
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(v[c], kPi) << p.x << "," << p.y;
+  });
+}
+
+// In front of the wall of the closed form above: pi (1 - (1 - h / sqrt(h^2 + H^2)) / 2). With
+// uniform directions each sample is 2 pi cos or 0, of variance at most E[(2 pi cos)^2] = 4 pi^2 /
+// 3; cosine-weighted ones are pi times a binomial fraction.
+TEST(AmbientOcclusionPbrtV3, WallIsPiTimesTheCosineWeightedClearFraction) {
+  const int nSamples = 4096, pixelSamples = 16;
+  const double n = double(nSamples) * pixelSamples, h = 0.5, wallHeight = 1;
+  double fraction = 1 - 0.5 * (1 - h / std::sqrt(h * h + wallHeight * wallHeight));
+  double cosine = aoInFrontOfWall(Float(h), Float(wallHeight), nSamples, pixelSamples, "", "ao");
+  EXPECT_NEAR(cosine, kPi * fraction, 4 * kPi * binomialSigma(fraction, n));
+  double uniform = aoInFrontOfWall(Float(h), Float(wallHeight), nSamples, pixelSamples,
+                                   "\"bool cossample\" \"false\"", "ao");
+  EXPECT_NEAR(uniform, kPi * fraction, 4 * std::sqrt(4 * kPi * kPi / 3 / n));
+  // Not the clear fraction of uniform directions, which pbrt-v2's integrator would give.
+  double uniformFraction = aoInFrontOfWall(Float(h), Float(wallHeight), nSamples, pixelSamples,
+                                           "\"bool cossample\" \"false\"");
+  EXPECT_GT(std::abs(uniform - kPi * uniformFraction), 0.05);
+}
+
+TEST(AmbientOcclusionPbrtV3, NonPositiveSampleCountIsASceneError) {
+  try {
+    test::buildSceneText("Integrator \"ao\"\n  \"integer nsamples\" [-2]\nWorldBegin\nWorldEnd\n");
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.location().line, 2) << e.what();
+  }
 }
 
 TEST(AmbientOcclusion, ClosedBoxAroundTheCameraIsBlack) {
