@@ -2,11 +2,13 @@
 """Convergence benchmark: error against run time for the example scenes x integrators x samplers.
 
     benchmarks/convergence.py [--out DIR] [--spp N] [--ref-spp N] [--full]
+                              [--scenes a,b] [--methods path/stratified,...]
 
-Renders each scene's reference once (tools/reference.sh caches it), then each combination with
---reference and --error-log, and writes DIR/convergence.csv (the table), DIR/convergence.md (the
-same as Markdown) and one plot per scene DIR/<scene>.png (tools/plot_convergence.py). By default
-scenes render at --quick resolution so the whole run takes a few minutes on two cores.
+Renders each scene's reference once (tools/reference.sh caches it; path tracing at --ref-spp),
+then each method with --reference and --error-log, and writes DIR/convergence.csv (the table),
+DIR/convergence.md (the same as Markdown) and one plot per scene DIR/<scene>.png
+(tools/plot_convergence.py). By default scenes render at --quick resolution so the whole run takes
+a few minutes on two cores.
 
 Columns: time to reach relMSE 1e-2 and 1e-3 (log-log interpolation between passes; '-' when not
 reached), and relMSE at equal time (the shortest total time of the scene's runs).
@@ -21,10 +23,15 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SCENES = ["scenes/cornell-box/cornell-box.pbrt", "scenes/spheres/spheres.pbrt"]
-INTEGRATORS = {"path": '"path" "integer maxdepth" [5]',
+SCENES = {"cornell-box": "scenes/cornell-box/cornell-box.pbrt",
+          "caustic": "scenes/caustic/caustic.pbrt",
+          "indirect-room": "scenes/indirect-room/indirect-room.pbrt",
+          "spheres": "scenes/spheres/spheres.pbrt"}
+DEFAULT_SCENES = ["cornell-box", "caustic", "indirect-room"]
+INTEGRATORS = {"path": '"path" "integer maxdepth" [8]',
                "directlighting": '"directlighting"'}
 SAMPLERS = {"stratified": '"stratified"', "random": '"random"'}
+DEFAULT_METHODS = [f"{i}/{s}" for i in INTEGRATORS for s in SAMPLERS]
 
 
 def variant(scene_text, integrator, sampler):
@@ -68,7 +75,20 @@ def main():
     ap.add_argument("--spp", type=int, default=256)
     ap.add_argument("--ref-spp", type=int, default=4096)
     ap.add_argument("--full", action="store_true", help="full resolution (slow)")
+    ap.add_argument("--scenes", default=",".join(DEFAULT_SCENES),
+                    help="comma-separated, of: " + ", ".join(SCENES))
+    ap.add_argument("--methods", default=",".join(DEFAULT_METHODS),
+                    help="comma-separated integrator/sampler pairs, of: " +
+                    ", ".join(INTEGRATORS) + " / " + ", ".join(SAMPLERS))
     args = ap.parse_args()
+    scenes = args.scenes.split(",")
+    methods = [m.split("/") for m in args.methods.split(",")]
+    for name in scenes:
+        if name not in SCENES:
+            sys.exit(f"convergence.py: unknown scene {name} (known: {', '.join(SCENES)})")
+    for m in methods:
+        if len(m) != 2 or m[0] not in INTEGRATORS or m[1] not in SAMPLERS:
+            sys.exit(f"convergence.py: bad method {'/'.join(m)}")
     candela = os.environ.get("CANDELA", os.path.join(ROOT, "build", "candela"))
     if not os.access(candela, os.X_OK):
         sys.exit(f"convergence.py: no candela at {candela} (build first)")
@@ -76,31 +96,38 @@ def main():
     quick = [] if args.full else ["--quick"]
     env = dict(os.environ, CANDELA=candela)
     table = []
-    for scene in SCENES:
-        name = os.path.splitext(os.path.basename(scene))[0]
-        scene_path = os.path.join(ROOT, scene)
-        ref = subprocess.run([os.path.join(ROOT, "tools", "reference.sh"), scene_path,
-                              str(args.ref_spp), "1000"] + quick, env=env, check=True,
-                             capture_output=True, text=True).stdout.strip()
+    for name in scenes:
+        scene_path = os.path.join(ROOT, SCENES[name])
         text = open(scene_path).read()
+        # The reference is path tracing of the same depth as the "path" method, whatever the
+        # scene file selects; a fixed file name keeps tools/reference.sh's cache.
+        ref_scene = os.path.join(os.path.dirname(scene_path), f".{name}-reference.pbrt")
+        with open(ref_scene, "w") as f:
+            f.write(re.sub(r'^SurfaceIntegrator .*$', "SurfaceIntegrator " + INTEGRATORS["path"],
+                           text, flags=re.M))
+        try:
+            ref = subprocess.run([os.path.join(ROOT, "tools", "reference.sh"), ref_scene,
+                                  str(args.ref_spp), "1000"] + quick, env=env, check=True,
+                                 capture_output=True, text=True).stdout.strip()
+        finally:
+            os.remove(ref_scene)
         logs = {}
-        for integ in INTEGRATORS:
-            for samp in SAMPLERS:
-                label = f"{integ}/{samp}"
-                log = os.path.join(args.out, f"{name}-{integ}-{samp}.csv")
-                if os.path.exists(log):
-                    os.remove(log)
-                with tempfile.NamedTemporaryFile("w", suffix=".pbrt", dir=os.path.dirname(scene_path),
-                                                 delete=False) as f:
-                    f.write(variant(text, integ, samp))
-                try:
-                    subprocess.run([candela, f.name, "--spp", str(args.spp), "--seed", "1",
-                                    "--reference", ref, "--error-log", log, "-o",
-                                    os.path.join(args.out, "last.exr"), "--preview", "none",
-                                    "--quiet"] + quick, check=True)
-                finally:
-                    os.remove(f.name)
-                logs[label] = read_log(log)
+        for integ, samp in methods:
+            label = f"{integ}/{samp}"
+            log = os.path.join(args.out, f"{name}-{integ}-{samp}.csv")
+            if os.path.exists(log):
+                os.remove(log)
+            with tempfile.NamedTemporaryFile("w", suffix=".pbrt", dir=os.path.dirname(scene_path),
+                                             delete=False) as f:
+                f.write(variant(text, integ, samp))
+            try:
+                subprocess.run([candela, f.name, "--spp", str(args.spp), "--seed", "1",
+                                "--reference", ref, "--error-log", log, "-o",
+                                os.path.join(args.out, "last.exr"), "--preview", "none",
+                                "--quiet"] + quick, check=True)
+            finally:
+                os.remove(f.name)
+            logs[label] = read_log(log)
         equal_time = min(rows[-1]["seconds"] for rows in logs.values())
         for label, rows in logs.items():
             t2, t3 = time_to(rows, 1e-2), time_to(rows, 1e-3)

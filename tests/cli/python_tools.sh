@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The Python tools run with what the extras install list brings (python3, python3-matplotlib):
-# the convergence benchmark at a tiny sample count (references through tools/reference.sh, the
+# the convergence benchmark at a tiny sample count on two scenes (references through tools/reference.sh, the
 # table and the plots), and the accelerator scaling plot from a small CSV.
 set -euo pipefail
 candela=$1 src=$2 work=$3
@@ -8,8 +8,9 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work"
 is_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ]; }
 
 CANDELA=$candela CANDELA_CACHE=$work/cache /usr/bin/python3 "$src/benchmarks/convergence.py" \
-  --out "$work/conv" --spp 4 --ref-spp 8 >conv.txt
-for f in conv/convergence.csv conv/convergence.md conv/cornell-box.png conv/spheres.png; do
+  --out "$work/conv" --spp 4 --ref-spp 8 --scenes cornell-box,caustic \
+  --methods path/stratified,path/random,directlighting/stratified,directlighting/random >conv.txt
+for f in conv/convergence.csv conv/convergence.md conv/cornell-box.png conv/caustic.png; do
   test -s "$f" || { cat conv.txt; echo "FAIL: convergence.py wrote no $f"; exit 1; }
 done
 is_png conv/cornell-box.png || { echo "FAIL: cornell-box.png is not a PNG"; exit 1; }
