@@ -35,6 +35,11 @@ uint64_t prepassSeed(const Sampler& sampler) {
   return hashValues({a, b, 0x1c0ffee});
 }
 
+// Grid points per batch: a round is taken in batches of this many, in order, each seeing the
+// samples of those before it, so that memory for the found points stays bounded on large images.
+// A constant, so batches never depend on threads.
+constexpr size_t kBatchPixels = 1 << 16;
+
 struct WorkerCounters {
   RayStats rays;
 };
@@ -56,12 +61,11 @@ PrepassResult fillIrradianceCache(IrradianceOctree& cache, const Camera& camera,
   tbb::task_arena arena(threads);
   int firstStep = std::max(1, plan.firstStep);
 
-  int round = 0;
-  for (int step = firstStep; step >= 1; step /= 2, ++round) {
-    std::vector<Point2i> pixels = roundPixels(plan.resolution, step, step == firstStep);
-    const size_t nPixels = pixels.size();
-    result.cameraRays += nPixels;
-
+  // One batch of a round's grid points, [begin, end) in its order; number counts the round's
+  // points so far.
+  auto runBatch = [&](const std::vector<Point2i>& pixels, size_t begin, size_t end, int round,
+                      uint64_t& number) {
+    const size_t nPixels = end - begin;
     // 1. Camera rays through the pixel centres (lens centre, mid-shutter), with differentials one
     // pixel apart so that pixel spacings are in pixels of this image.
     std::vector<std::vector<IrradianceQuery>> found(nPixels);
@@ -69,12 +73,13 @@ PrepassResult fillIrradianceCache(IrradianceOctree& cache, const Camera& camera,
       tbb::parallel_for(size_t(0), nPixels, [&](size_t i) {
         if (options.setUpThread) options.setUpThread();
         WorkerCounters& c = counters.local();
+        const Point2i& pixel = pixels[begin + i];
         std::unique_ptr<Sampler> s = sampler.clone();
-        s->startPixelSample(pixels[i], 0);
+        s->startPixelSample(pixel, 0);
         MemoryArena memory;
         IntegratorContext ctx{*s, memory, c.rays};
         CameraSample cs;
-        cs.pFilm = Point2f(Float(pixels[i].x) + 0.5f, Float(pixels[i].y) + 0.5f);
+        cs.pFilm = Point2f(Float(pixel.x) + 0.5f, Float(pixel.y) + 0.5f);
         cs.pLens = Point2f(0.5f, 0.5f);
         cs.time = 0.5f;
         RayDifferential ray;
@@ -93,7 +98,6 @@ PrepassResult fillIrradianceCache(IrradianceOctree& cache, const Camera& camera,
     };
     std::vector<Job> jobs;
     IrradianceOctree provisional(cache.bounds());
-    uint64_t number = 0;
     for (size_t i = 0; i < nPixels; ++i)
       for (const IrradianceQuery& q : found[i]) {
         ++result.uncached;
@@ -128,6 +132,15 @@ PrepassResult fillIrradianceCache(IrradianceOctree& cache, const Camera& camera,
     });
     for (const IrradianceSample& s : samples) cache.add(s);
     result.estimated += samples.size();
+  };
+
+  int round = 0;
+  for (int step = firstStep; step >= 1; step /= 2, ++round) {
+    std::vector<Point2i> pixels = roundPixels(plan.resolution, step, step == firstStep);
+    result.cameraRays += pixels.size();
+    uint64_t number = 0;
+    for (size_t begin = 0; begin < pixels.size(); begin += kBatchPixels)
+      runBatch(pixels, begin, std::min(pixels.size(), begin + kBatchPixels), round, number);
   }
   progress.done();
   for (const WorkerCounters& c : counters) result.rays += c.rays;

@@ -2,11 +2,12 @@
 // reads it (pbrt 2e §15.5 primes its cache with a one-sample-per-pixel pass, since a cache
 // filled on demand makes neighbouring pixels disagree). Here the pass is deterministic: camera
 // rays through pixel centres on grids from coarse to fine over the whole image (whatever the crop
-// window), every pixel by the last grid. Each grid is one round: the rays find the points the
-// cache cannot yet answer, in parallel against the cache as the round began; the points are
-// numbered in pixel order, a point that earlier points of the round will surely cover is dropped,
-// the rest are estimated in parallel, each from a seed given by its number, and inserted in
-// number order. The cache is a function of (scene, camera, resolution, sampler seed) only.
+// window), every pixel by the last grid. Each grid is one round, taken in batches of a fixed
+// number of grid points: the batch's rays find the points the cache cannot yet answer, in
+// parallel against the cache as the batch began; the points are numbered in pixel order, a point
+// that earlier points of the batch will surely cover is dropped, the rest are estimated in
+// parallel, each from a seed given by its round and number, and inserted in number order. The
+// cache is a function of (scene, camera, resolution, sampler seed) only.
 #pragma once
 
 #include <functional>
