@@ -99,6 +99,8 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   } else {
     result = renderer.render(*job.scene, *job.film, options);
   }
+  // What the integrator built while rendering (the irradiance cache's samples and memory).
+  if (cli.stats) std::fprintf(stderr, "%s", job.integrator->statsReport().c_str());
   if (!cli.quiet) {
     uint64_t rays = result.rays.intersectionRays + result.rays.shadowRays;
     std::fprintf(stderr,

@@ -3,11 +3,25 @@
 // the sampler, the arena and the counters.
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include "core/memory.h"
 #include "samplers/sampler.h"
 #include "scene/scene.h"
 
 namespace candela {
+
+class Camera;
+class Film;
+
+// How the renderer runs a prepass: threads (0: all cores), whether to show progress, and what
+// every thread that traces rays must call first (the renderer's floating-point mode; empty: none).
+struct PrepassOptions {
+  int nThreads = 0;
+  bool quiet = true;
+  std::function<void()> setUpThread;
+};
 
 struct IntegratorContext {
   Sampler& sampler;
@@ -19,6 +33,16 @@ class SurfaceIntegrator {
  public:
   virtual ~SurfaceIntegrator() = default;
   virtual void preprocess(const Scene&) {}
+  // Work that needs the camera and the film: the renderer calls it before the first pixel of
+  // every render, and an integrator that has already done its work returns at once. What it
+  // builds must be a function of (scene, camera, film resolution, sampler seed) only, never of
+  // threads, crop window or order of completion. Returns the rays it traced.
+  virtual RayStats prepare(const Scene&, const Camera&, const Sampler&, const Film&,
+                           const PrepassOptions&) {
+    return {};
+  }
+  // Lines for --stats about what prepare built; empty when there is nothing to say.
+  virtual std::string statsReport() const { return {}; }
   // *alpha is set to 1 when the ray hits a surface and 0 when it escapes.
   virtual Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
                       Float* alpha) const = 0;

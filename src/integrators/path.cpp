@@ -7,8 +7,21 @@
 
 namespace candela {
 
-Spectrum PathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene,
-                            IntegratorContext& ctx, Float* alpha) const {
+Spectrum PathIntegrator::Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
+                            Float* alpha) const {
+  Float hitDistance;
+  return radiance(ray, scene, ctx, true, alpha, &hitDistance);
+}
+
+Spectrum PathIntegrator::scatteredLi(const RayDifferential& ray, const Scene& scene,
+                                     IntegratorContext& ctx, Float* hitDistance) const {
+  Float alpha;
+  return radiance(ray, scene, ctx, false, &alpha, hitDistance);
+}
+
+Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene& scene,
+                                  IntegratorContext& ctx, bool firstEmission, Float* alpha,
+                                  Float* hitDistance) const {
   Spectrum l(0), beta(1);
   RayDifferential ray(cameraRay);
   bool specularBounce = false;
@@ -17,9 +30,12 @@ Spectrum PathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene
     SurfaceInteraction isect;
     Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
     bool hit = scene.intersect(ray, &isect, ctx.stats);
-    if (bounces == 0) *alpha = hit ? 1 : 0;
+    if (bounces == 0) {
+      *alpha = hit ? 1 : 0;
+      *hitDistance = hit ? ray.tMax : kInfinity;
+    }
     // Emission is counted here only where next-event estimation could not have sampled it.
-    if (bounces == 0 || specularBounce) {
+    if ((bounces == 0 && firstEmission) || (bounces > 0 && specularBounce)) {
       if (hit) {
         if (isect.primitive->areaLight) l += beta * isect.primitive->areaLight->L(isect, -ray.d);
       } else {

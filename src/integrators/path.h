@@ -13,8 +13,16 @@ class PathIntegrator : public SurfaceIntegrator {
       : maxDepth_(maxDepth), rrStartDepth_(rrStartDepth) {}
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
+  // The radiance arriving along ray without the emission of what it meets first (a surface's Le
+  // or, when it escapes, the lights' Le): light that has scattered at least once, as an
+  // irradiance estimate's rays need it (pbrt 2e §15.5.3). *hitDistance is the ray parameter of
+  // the first hit, infinity when the ray escapes.
+  Spectrum scatteredLi(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
+                       Float* hitDistance) const;
 
  private:
+  Spectrum radiance(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
+                    bool firstEmission, Float* alpha, Float* hitDistance) const;
   int maxDepth_;
   int rrStartDepth_;
 };

@@ -8,11 +8,19 @@ namespace candela {
 
 Spectrum SpecularRecursionIntegrator::Li(const RayDifferential& ray, const Scene& scene,
                                          IntegratorContext& ctx, Float* alpha) const {
-  return trace(ray, scene, ctx, 0, alpha);
+  return trace(ray, scene, ctx, 0, alpha, nullptr);
+}
+
+Spectrum SpecularRecursionIntegrator::traceWith(const RayDifferential& ray, const Scene& scene,
+                                                IntegratorContext& ctx,
+                                                const SurfaceTerm& term) const {
+  Float alpha;
+  return trace(ray, scene, ctx, 0, &alpha, &term);
 }
 
 Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Scene& scene,
-                                            IntegratorContext& ctx, int depth, Float* alpha) const {
+                                            IntegratorContext& ctx, int depth, Float* alpha,
+                                            const SurfaceTerm* term) const {
   SurfaceInteraction isect;
   Spectrum l(0);
   Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
@@ -27,11 +35,11 @@ Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Sc
   if (!prim.material) {
     // An interface without scattering: continue straight through, at the same depth.
     Float a;
-    return l + trace(continueThrough(isect, ray, tMax), scene, ctx, depth, &a);
+    return l + trace(continueThrough(isect, ray, tMax), scene, ctx, depth, &a, term);
   }
   isect.computeDifferentials(ray);
   const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
-  l += directLight(isect, *bsdf, scene, ctx);
+  l += term ? (*term)(isect, *bsdf, ctx) : directLight(isect, *bsdf, scene, ctx);
 
   if (depth + 1 < maxDepth_) {
     // Perfect specular reflection, then transmission: each is one deterministic direction, so
@@ -46,7 +54,7 @@ Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Sc
       if (pdf > 0 && !f.isBlack() && cosTerm != 0) {
         Float a;
         RayDifferential next = spawnSpecularRay(isect, *bsdf, ray, wi, transmission);
-        l += f * trace(next, scene, ctx, depth + 1, &a) * (cosTerm / pdf);
+        l += f * trace(next, scene, ctx, depth + 1, &a, term) * (cosTerm / pdf);
       }
     }
   }

@@ -4,6 +4,8 @@
 // and transmission while depth + 1 < maxdepth. Rays that escape see the lights' Le.
 #pragma once
 
+#include <functional>
+
 #include "integrators/integrator.h"
 #include "reflection/bsdf.h"
 
@@ -21,9 +23,16 @@ class SpecularRecursionIntegrator : public SurfaceIntegrator {
   virtual Spectrum directLight(const SurfaceInteraction& isect, const BSDF& bsdf,
                                const Scene& scene, IntegratorContext& ctx) const = 0;
 
+  // The same walk with another term at each scattering surface in place of directLight (the
+  // irradiance cache's prepass visits the points a camera ray shades through it).
+  using SurfaceTerm =
+      std::function<Spectrum(const SurfaceInteraction&, const BSDF&, IntegratorContext&)>;
+  Spectrum traceWith(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
+                     const SurfaceTerm& term) const;
+
  private:
   Spectrum trace(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx, int depth,
-                 Float* alpha) const;
+                 Float* alpha, const SurfaceTerm* term) const;
   int maxDepth_;
 };
 

@@ -24,6 +24,8 @@ struct TileCounters {
 RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
                                      const RenderOptions& options) const {
   auto start = std::chrono::steady_clock::now();
+  RayStats prepassRays = integrator_.prepare(scene, camera_, sampler_, film,
+                                             {options.nThreads, options.quiet, enableFlushToZero});
   const Bounds2i bounds = film.pixelBounds();
   const int tile = std::max(1, options.tileSize);
   const int nx = (bounds.pMax.x - bounds.pMin.x + tile - 1) / tile;
@@ -106,6 +108,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   progress.done();
 
   RenderResult result;
+  result.rays = prepassRays;
   for (const TileCounters& c : counters) {
     result.rays += c.rays;
     result.samples += c.samples;

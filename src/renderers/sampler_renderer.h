@@ -31,14 +31,15 @@ struct RenderResult {
 
 class SamplerRenderer {
  public:
-  SamplerRenderer(const Camera& camera, const Sampler& sampler, const SurfaceIntegrator& integrator)
+  // The integrator is not const: render() first lets it prepare (SurfaceIntegrator::prepare).
+  SamplerRenderer(const Camera& camera, const Sampler& sampler, SurfaceIntegrator& integrator)
       : camera_(camera), sampler_(sampler), integrator_(integrator) {}
   RenderResult render(const Scene& scene, Film& film, const RenderOptions& options) const;
 
  private:
   const Camera& camera_;
   const Sampler& sampler_;
-  const SurfaceIntegrator& integrator_;
+  SurfaceIntegrator& integrator_;
 };
 
 }  // namespace candela

@@ -1,6 +1,7 @@
 // SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator.
 #include "integrators/ambient_occlusion.h"
 #include "integrators/direct_lighting.h"
+#include "integrators/irradiance/irradiance_cache_integrator.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
 #include "scene/plugin_factories.h"
@@ -13,20 +14,59 @@ namespace {
 // as unused.
 // recursive: the integrator recurses once per level (whitted, directlighting), on a worker
 // thread's stack, which two facing mirrors overflow somewhere past 10,000 levels.
-int maxDepthParam(const PluginDesc& desc, bool recursive) {
+int maxDepthParam(const PluginDesc& desc, bool recursive, const char* name = "maxdepth") {
   const ParamSet& p = desc.params;
-  int maxDepth = p.getOneInt("maxdepth", 5);
-  if (maxDepth < 0) throw SceneError(p.locationOf("maxdepth", desc.loc), "maxdepth must be >= 0");
+  int maxDepth = p.getOneInt(name, 5);
+  if (maxDepth < 0)
+    throw SceneError(p.locationOf(name, desc.loc), std::string(name).append(" must be >= 0"));
   constexpr int kMaxRecursion = 1000;
   if (recursive && maxDepth > kMaxRecursion)
-    throw SceneError(p.locationOf("maxdepth", desc.loc),
-                     std::string("maxdepth must be at most ")
+    throw SceneError(p.locationOf(name, desc.loc),
+                     std::string(name)
+                         .append(" must be at most ")
                          .append(std::to_string(kMaxRecursion))
                          .append(" for '")
                          .append(desc.name)
                          .append("', which recurses once per level; got ")
                          .append(std::to_string(maxDepth)));
   return maxDepth;
+}
+
+// "irradiancecache" with both dialects' parameters (their mapping: irradiance_cache_settings.h).
+IrradianceCacheSettings irradianceCacheParams(const PluginDesc& desc) {
+  const ParamSet& p = desc.params;
+  IrradianceCacheSettings s;
+  auto fail = [&](const char* name, const std::string& what) {
+    throw SceneError(p.locationOf(name, desc.loc), what);
+  };
+  s.maxError = p.getOneFloat("maxerror", s.maxError);
+  if (!(s.maxError >= 0 && s.maxError < kInfinity))
+    fail("maxerror", "maxerror must be >= 0 and finite (0: cache nothing)");
+  s.minWeight = p.getOneFloat("minweight", s.minWeight);
+  if (!(s.minWeight >= 0 && s.minWeight < kInfinity))
+    fail("minweight", "minweight must be >= 0 and finite");
+  s.minPixelSpacing = p.getOneFloat("minpixelspacing", s.minPixelSpacing);
+  if (!(s.minPixelSpacing >= 0 && s.minPixelSpacing < kInfinity))
+    fail("minpixelspacing", "minpixelspacing must be >= 0 and finite");
+  s.maxPixelSpacing = p.getOneFloat("maxpixelspacing", s.maxPixelSpacing);
+  if (!(s.maxPixelSpacing > 0 && s.maxPixelSpacing < kInfinity))
+    fail("maxpixelspacing", "maxpixelspacing must be > 0 and finite");
+  if (s.minPixelSpacing > s.maxPixelSpacing)
+    fail(p.find("minpixelspacing") ? "minpixelspacing" : "maxpixelspacing",
+         "minpixelspacing (" + std::to_string(s.minPixelSpacing) +
+             ") must not exceed maxpixelspacing (" + std::to_string(s.maxPixelSpacing) + ")");
+  s.maxAngleDifference = p.getOneFloat("maxangledifference", s.maxAngleDifference);
+  if (!(s.maxAngleDifference > 0 && s.maxAngleDifference <= 90))
+    fail("maxangledifference", "maxangledifference must be in (0, 90] degrees");
+  s.nSamples = p.getOneInt("nsamples", s.nSamples);
+  if (s.nSamples < 1) fail("nsamples", "nsamples must be >= 1");
+  s.nFilter = p.getOneInt("nfilter", s.nFilter);
+  if (s.nFilter < 0) fail("nfilter", "nfilter must be >= 0");
+  s.nFilter = std::min(s.nFilter, s.nSamples - 1);  // the draft's clamp: keep one value
+  s.maxSpecularDepth = maxDepthParam(desc, true, "maxspeculardepth");
+  s.maxIndirectDepth = p.getOneInt("maxindirectdepth", s.maxIndirectDepth);
+  if (s.maxIndirectDepth < 0) fail("maxindirectdepth", "maxindirectdepth must be >= 0");
+  return s;
 }
 
 }  // namespace
@@ -67,8 +107,11 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
     return std::make_unique<AmbientOcclusionIntegrator>(
         nSamples, kInfinity, cosSample, AmbientOcclusionIntegrator::Estimate::UnoccludedCosine);
   }
-  throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
-                     {"ambientocclusion", "ao", "directlighting", "path", "whitted"});
+  if (desc.name == "irradiancecache")
+    return std::make_unique<IrradianceCacheIntegrator>(irradianceCacheParams(desc));
+  throwUnknownPlugin(
+      desc.loc, "surface integrator", desc.name,
+      {"ambientocclusion", "ao", "directlighting", "irradiancecache", "path", "whitted"});
 }
 
 }  // namespace candela
