@@ -27,6 +27,7 @@ std::string BuildStats::report() const {
   os << "  textures loaded  " << textures << "\n";
   os << "  aggregate  " << aggregate.name << "\n";
   for (const auto& [what, n] : aggregate.counts) os << "  " << what << "  " << n << "\n";
+  for (const auto& [what, n] : integrator) os << "  " << what << "  " << n << "\n";
   return os.str();
 }
 
@@ -223,6 +224,14 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   PluginDesc integratorDesc = !desc.integrator.name.empty()
                                   ? desc.integrator
                                   : orDefault(desc.surfaceIntegrator, "directlighting");
+  if (options.quick && integratorDesc.name == "igi") {
+    // --quick traces a quarter of igi's light paths (pbrt-v2's rule). A count below 1 is left
+    // for the factory to report where the scene gave it.
+    int nLights = integratorDesc.params.getOneInt("nlights", 64);
+    if (nLights >= 1)
+      integratorDesc.params =
+          withInt(integratorDesc.params, "nlights", std::max(1, nLights / 4), integratorDesc.loc);
+  }
   job.integrator = createSurfaceIntegrator(integratorDesc);
   reportUnused(integratorDesc, warn);
 
@@ -250,6 +259,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   job.scene = std::make_unique<Scene>(job.aggregate.get(), std::move(lights));
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
   job.integrator->preprocess(*job.scene);
+  job.stats.integrator = job.integrator->preprocessStats();
   return job;
 }
 

@@ -58,6 +58,7 @@ struct BuildStats {
   long materials = 0;
   long textures = 0;
   AggregateStats aggregate;
+  std::vector<std::pair<std::string, long>> integrator;  // what its preprocess built
   std::string report() const;
 };
 
