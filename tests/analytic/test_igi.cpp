@@ -201,5 +201,37 @@ TEST(IgiConvergence, ErrorAgainstPathTracingFallsAsPathsAndBoundGrow) {
   EXPECT_LT(previous, 0.04);
 }
 
+TEST(IgiOneSidedLights, AWallKeepsTheOtherRoomDark) {
+  // A closed cube split at x = 0 by a matte wall (a little larger than the cube, so no seam
+  // lets light through), a point light in the -x half, the camera in the +x half looking at the
+  // wall. No light reaches the +x half, so every pixel must be exactly 0. A VPL on the wall's
+  // lit face that also shone from its back (|cos| at the VPL, as pbrt-v2 computes G) would
+  // light this room: the shadow ray from this side stops at the wall before crossing it.
+  auto r = test::renderSceneText(
+      "LookAt 0.9 0 0  -1 0 0  0 1 0\n"
+      "Camera \"perspective\" \"float fov\" [100]\n"
+      "Film \"image\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
+      "Sampler \"random\" \"integer pixelsamples\" [4]\n"
+      "SurfaceIntegrator \"igi\" \"float glimit\" [1]\n"
+      "WorldBegin\n"
+      "LightSource \"point\" \"point from\" [-0.5 0.3 0.2] \"rgb I\" [5 5 5]\n"
+      "Material \"matte\" \"rgb Kd\" [0.8 0.8 0.8]\n"
+      "Shape \"trianglemesh\" \"point P\" [-1 -1 -1  1 -1 -1  1 1 -1  -1 1 -1  -1 -1 1  1 -1 1"
+      "  1 1 1  -1 1 1]\n"
+      "  \"integer indices\" [0 1 2  0 2 3  4 6 5  4 7 6  0 4 5  0 5 1  3 2 6  3 6 7  0 3 7"
+      "  0 7 4  1 5 6  1 6 2]\n"
+      "Shape \"trianglemesh\" \"point P\" [0 -1.1 -1.1  0 1.1 -1.1  0 1.1 1.1  0 -1.1 1.1]\n"
+      "  \"integer indices\" [0 1 2 0 2 3]\n"
+      "WorldEnd\n");
+  ASSERT_GT(r.job().stats.integrator.at(0).second, 0);  // the lit half does have VPLs
+  Bounds2i b = r.film().pixelBounds();
+  for (int y = b.pMin.y; y < b.pMax.y; ++y)
+    for (int x = b.pMin.x; x < b.pMax.x; ++x) {
+      Spectrum v = r.film().pixelValue(Point2i(x, y));
+      EXPECT_EQ(r.film().pixelAlpha(Point2i(x, y)), 1.f);
+      EXPECT_EQ(v[0], 0.f) << x << "," << y;
+    }
+}
+
 }  // namespace
 }  // namespace candela
