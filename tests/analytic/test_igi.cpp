@@ -233,5 +233,38 @@ TEST(IgiOneSidedLights, AWallKeepsTheOtherRoomDark) {
     }
 }
 
+TEST(IgiSpecular, MirrorShowsTheLightWithinMaxDepth) {
+  // An orthographic camera looks down at a mirror (Kr 0.5); straight above the camera, a black
+  // emitter (Le 2) faces down. The mirror shows Kr Le = 1 once the recursion may take one level
+  // (maxdepth 2, and the default 5), and nothing at maxdepth 1; no randomness is involved.
+  for (int maxDepth : {1, 2, 5}) {
+    auto r = test::renderSceneText(
+        "LookAt 0 0 2  0 0 0  0 1 0\n"
+        "Camera \"orthographic\" \"float screenwindow\" [-0.5 0.5 -0.5 0.5]\n"
+        "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n"
+        "Sampler \"random\" \"integer pixelsamples\" [2]\n"
+        "SurfaceIntegrator \"igi\" \"integer maxdepth\" [" +
+        std::to_string(maxDepth) +
+        "]\n"
+        "WorldBegin\n"
+        "AttributeBegin\n"
+        "  Material \"matte\" \"rgb Kd\" [0 0 0]\n"
+        "  AreaLightSource \"diffuse\" \"rgb L\" [2 2 2]\n"
+        "  Shape \"trianglemesh\" \"integer indices\" [0 2 1 0 3 2]\n"
+        "    \"point P\" [-2 -2 3  2 -2 3  2 2 3  -2 2 3]\n"
+        "AttributeEnd\n"
+        "Material \"mirror\" \"rgb Kr\" [0.5 0.5 0.5]\n"
+        "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]\n"
+        "  \"point P\" [-2 -2 0  2 -2 0  2 2 0  -2 2 0]\n"
+        "WorldEnd\n");
+    float expected = maxDepth >= 2 ? 1.f : 0.f;
+    Bounds2i b = r.film().pixelBounds();
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+      for (int x = b.pMin.x; x < b.pMax.x; ++x)
+        EXPECT_NEAR(r.film().pixelValue(Point2i(x, y))[0], expected, 1e-5)
+            << "maxdepth " << maxDepth << ", pixel " << x << "," << y;
+  }
+}
+
 }  // namespace
 }  // namespace candela
