@@ -101,7 +101,7 @@ Spectrum InstantGlobalIlluminationIntegrator::gatherVirtualLights(const SurfaceI
   // number of VPLs does not change how many dimensions a sample uses.
   Point2f u = ctx.sampler.get2D();
   const std::vector<VirtualPointLight>& vpls = vpls_.sets[size_t(set)];
-  if (vpls.empty()) return Spectrum(0);
+  if (vpls.empty() || bsdf.numComponents(kNonSpecular) == 0) return Spectrum(0);
   RNG rng(hashValues({std::bit_cast<uint32_t>(u.x), std::bit_cast<uint32_t>(u.y)}));
   Normal3f ns = bsdf.shadingNormal();
   Float perPath = Float(1) / Float(vpls_.pathsPerSet);
@@ -138,6 +138,7 @@ Spectrum InstantGlobalIlluminationIntegrator::compensateBound(const SurfaceInter
   // exceeds glimit only closer than sqrt(|cos| / glimit), so the rays stop there. L is the light
   // the surface found reflects, computed by this integrator one level deeper.
   int n = depth == 0 ? params_.gatherSamples : 1;
+  if (bsdf.numComponents(kNonSpecular) == 0) return Spectrum(0);
   Normal3f ns = bsdf.shadingNormal();
   Spectrum l(0);
   for (int k = 0; k < n; ++k) {
