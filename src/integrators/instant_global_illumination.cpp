@@ -100,6 +100,7 @@ Spectrum InstantGlobalIlluminationIntegrator::gatherVirtualLights(const SurfaceI
   // The roulette below draws from a generator seeded by this vertex's sampler values, so the
   // number of VPLs does not change how many dimensions a sample uses.
   Point2f u = ctx.sampler.get2D();
+  if (size_t(set) >= vpls_.sets.size()) return Spectrum(0);  // not preprocessed
   const std::vector<VirtualPointLight>& vpls = vpls_.sets[size_t(set)];
   if (vpls.empty() || bsdf.numComponents(kNonSpecular) == 0) return Spectrum(0);
   RNG rng(hashValues({std::bit_cast<uint32_t>(u.x), std::bit_cast<uint32_t>(u.y)}));
