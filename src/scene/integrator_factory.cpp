@@ -1,6 +1,7 @@
 // SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator.
 #include "integrators/ambient_occlusion.h"
 #include "integrators/direct_lighting.h"
+#include "integrators/instant_global_illumination.h"
 #include "integrators/irradiance/irradiance_cache_integrator.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
@@ -69,6 +70,30 @@ IrradianceCacheSettings irradianceCacheParams(const PluginDesc& desc) {
   return s;
 }
 
+// pbrt-v2's "igi" parameters and defaults (pbrt 2e §15.4).
+std::unique_ptr<SurfaceIntegrator> createIgi(const PluginDesc& desc) {
+  const ParamSet& p = desc.params;
+  auto fail = [&](const char* name, const char* what) {
+    throw SceneError(p.locationOf(name, desc.loc), what);
+  };
+  IgiParameters igi;
+  igi.pathsPerSet = p.getOneInt("nlights", 64);
+  if (igi.pathsPerSet < 1) fail("nlights", "nlights must be >= 1");
+  igi.nSets = p.getOneInt("nsets", 4);
+  if (igi.nSets < 1) fail("nsets", "nsets must be >= 1");
+  // The VPL sets are numbered with 32-bit indices.
+  if (int64_t(igi.pathsPerSet) * igi.nSets > int64_t(1) << 30)
+    fail("nlights", "nlights * nsets must be at most 2^30");
+  igi.rrThreshold = p.getOneFloat("rrthreshold", 1e-4f);
+  if (!(igi.rrThreshold >= 0)) fail("rrthreshold", "rrthreshold must be >= 0");
+  igi.maxDepth = maxDepthParam(desc, true);
+  igi.gLimit = p.getOneFloat("glimit", 10);
+  if (!(igi.gLimit > 0)) fail("glimit", "glimit must be > 0");
+  igi.gatherSamples = p.getOneInt("gathersamples", 16);
+  if (igi.gatherSamples < 0) fail("gathersamples", "gathersamples must be >= 0");
+  return std::make_unique<InstantGlobalIlluminationIntegrator>(igi);
+}
+
 }  // namespace
 
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc) {
@@ -109,9 +134,10 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
   }
   if (desc.name == "irradiancecache")
     return std::make_unique<IrradianceCacheIntegrator>(irradianceCacheParams(desc));
+  if (desc.name == "igi") return createIgi(desc);
   throwUnknownPlugin(
       desc.loc, "surface integrator", desc.name,
-      {"ambientocclusion", "ao", "directlighting", "irradiancecache", "path", "whitted"});
+      {"ambientocclusion", "ao", "directlighting", "igi", "irradiancecache", "path", "whitted"});
 }
 
 }  // namespace candela

@@ -223,6 +223,14 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   PluginDesc integratorDesc = !desc.integrator.name.empty()
                                   ? desc.integrator
                                   : orDefault(desc.surfaceIntegrator, "directlighting");
+  if (options.quick && integratorDesc.name == "igi") {
+    // --quick traces a quarter of igi's light paths (pbrt-v2's rule). A count below 1 is left
+    // for the factory to report where the scene gave it.
+    int nLights = integratorDesc.params.getOneInt("nlights", 64);
+    if (nLights >= 1)
+      integratorDesc.params =
+          withInt(integratorDesc.params, "nlights", std::max(1, nLights / 4), integratorDesc.loc);
+  }
   job.integrator = createSurfaceIntegrator(integratorDesc);
   reportUnused(integratorDesc, warn);
 

@@ -1,0 +1,138 @@
+#include "integrators/virtual_point_lights.h"
+
+#include <array>
+
+#include "accel/primitive.h"
+#include "core/memory.h"
+#include "core/rng.h"
+#include "core/sampling.h"
+#include "integrators/specular_differentials.h"
+#include "materials/material.h"
+#include "reflection/bsdf.h"
+#include "reflection/bxdf.h"
+#include "samplers/radical_inverse.h"
+
+namespace candela {
+
+namespace {
+
+// Light paths are ended by Russian roulette; this only stops a path in a scene that reflects
+// all the light it receives.
+constexpr int kMaxPathVertices = 1024;
+// Samples of rho_hd for BxDFs without a closed form (4 x 4 jittered).
+constexpr int kRhoSqrtSamples = 4;
+
+// The five well-distributed dimensions of a path's start: light choice, origin (2), direction
+// (2), each a radical inverse in its own prime base with its own digit scrambling.
+std::array<Float, 5> pathStart(uint32_t index) {
+  std::array<Float, 5> u;
+  for (int d = 0; d < 5; ++d)
+    u[d] = scrambledRadicalInverse(index, kPrimes[d], hashValues({0x76706cULL, uint64_t(d)}));
+  return u;
+}
+
+Distribution1D lightPowerDistribution(const Scene& scene) {
+  std::vector<Float> power;
+  for (const Light* light : scene.lights()) power.push_back(std::max(Float(0), light->power().y()));
+  return Distribution1D(std::move(power));
+}
+
+void traceOnePath(const Scene& scene, const Distribution1D& lightChoice, uint32_t set,
+                  uint32_t path, uint32_t index, MemoryArena& arena, RayStats& stats,
+                  std::vector<VirtualPointLight>* out) {
+  std::array<Float, 5> u = pathStart(index);
+  RNG rng(hashValues({0x766c70617468ULL, set, path}));
+  Float lightPmf;
+  int lightIndex = lightChoice.sampleDiscrete(u[0], &lightPmf);
+  if (lightPmf == 0) return;
+  const Light& light = *scene.lights()[lightIndex];
+  Ray start;
+  Normal3f nLight;
+  Float pdfPos, pdfDir;
+  Spectrum le = light.sampleLe(Point2f(u[1], u[2]), Point2f(u[3], u[4]), 0, &start, &nLight,
+                               &pdfPos, &pdfDir);
+  if (pdfPos == 0 || pdfDir == 0 || le.isBlack()) return;
+  // The flux the path carries: the emission cosine belongs in it (pbrt-v2's code has it, the
+  // book's text leaves it out); a point light reports its direction as nLight, so cos = 1.
+  Spectrum alpha = le * (absDot(nLight, normalize(start.d)) / (lightPmf * pdfPos * pdfDir));
+  RayDifferential ray(start);
+  const int nonSpecularReflection = kReflection | kDiffuse | kGlossy;
+  for (int vertex = 0; vertex < kMaxPathVertices; ++vertex) {
+    SurfaceInteraction isect;
+    Float tMax = ray.tMax;
+    if (!scene.intersect(ray, &isect, stats)) break;
+    const Primitive& prim = *isect.primitive;
+    if (!prim.material) {
+      ray = continueThrough(isect, ray, tMax);
+      continue;
+    }
+    const BSDF* bsdf = prim.material->getBSDF(isect, arena);
+    Vector3f wo = isect.wo;
+    if (bsdf->numComponents(nonSpecularReflection) > 0) {
+      // The VPL reflects like a Lambertian surface with the hit's rho_hd(wo) (pbrt 2e §15.4)
+      // rather than with the hit's own BSDF: keeping every BSDF alive past the preprocess would
+      // need its BxDFs and texture values copied out of the arena, and a glossy VPL sends its
+      // flux into a narrow lobe whose spikes the bound on G does not limit. The stand-in is exact
+      // for matte surfaces and keeps the reflected energy of the others.
+      RNG rhoRng(rng.uniformUInt32());
+      std::vector<Point2f> uRho = stratifiedSamples2D(kRhoSqrtSamples, rhoRng);
+      Spectrum rho = bsdf->rho(wo, uRho, nonSpecularReflection);
+      if (!rho.isBlack()) {
+        Interaction at(isect.p, faceForward(isect.n, wo), isect.pError, wo, isect.time);
+        out->push_back({at, alpha * rho * kInvPi});
+      }
+    }
+    // Continue by sampling the whole BSDF, with Russian roulette on the throughput's change so
+    // that the stored points carry similar flux.
+    Vector3f wi;
+    Float pdf;
+    Float uComponent = rng.uniformFloat();
+    Point2f uDirection(rng.uniformFloat(), rng.uniformFloat());
+    Spectrum f = bsdf->sampleF(wo, &wi, uComponent, uDirection, &pdf, kAllBxDF);
+    if (f.isBlack() || pdf == 0) break;
+    Spectrum scale = f * (absDot(wi, bsdf->shadingNormal()) / pdf);
+    Float continueProb = std::min(Float(1), scale.maxComponent());
+    if (!(rng.uniformFloat() < continueProb)) break;
+    alpha *= scale / continueProb;
+    if (!alpha.isFinite()) break;
+    ray = RayDifferential(isect.spawnRay(wi));
+  }
+}
+
+}  // namespace
+
+size_t VirtualPointLightSets::count() const {
+  size_t n = 0;
+  for (const auto& s : sets) n += s.size();
+  return n;
+}
+
+size_t VirtualPointLightSets::memoryBytes() const {
+  size_t bytes = sets.capacity() * sizeof(sets[0]);
+  for (const auto& s : sets) bytes += s.capacity() * sizeof(VirtualPointLight);
+  return bytes;
+}
+
+VirtualPointLightSets traceVirtualPointLights(const Scene& scene, int nSets, int pathsPerSet) {
+  VirtualPointLightSets result;
+  result.pathsPerSet = pathsPerSet;
+  result.sets.resize(size_t(nSets));
+  if (scene.lights().empty()) return result;
+  Distribution1D lightChoice = lightPowerDistribution(scene);
+  if (lightChoice.integral() == 0) return result;
+  // One thread, in index order: a few thousand short paths take milliseconds, and the order
+  // makes the sets the same on every run.
+  MemoryArena arena;
+  RayStats stats;
+  for (int s = 0; s < nSets; ++s)
+    for (int i = 0; i < pathsPerSet; ++i) {
+      uint32_t index = uint32_t(s) * uint32_t(pathsPerSet) + uint32_t(i);
+      traceOnePath(scene, lightChoice, uint32_t(s), uint32_t(i), index, arena, stats,
+                   &result.sets[size_t(s)]);
+      arena.reset();
+    }
+  for (auto& s : result.sets) s.shrink_to_fit();
+  return result;
+}
+
+}  // namespace candela
