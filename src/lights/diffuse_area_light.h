@@ -19,6 +19,9 @@ class DiffuseAreaLight : public AreaLight {
   Float pdfLi(const Interaction& ref, const Vector3f& wi) const override {
     return shape_->pdf(ref, wi);
   }
+  Spectrum sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                    Normal3f* nLight, Float* pdfPos, Float* pdfDir) const override;
+  void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   Spectrum power() const override { return lEmit_ * ((twoSided_ ? 2 : 1) * shape_->area() * kPi); }
   bool isDelta() const override { return false; }
 

@@ -15,6 +15,9 @@ class DistantLight : public Light {
   Spectrum sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi, Float* pdf,
                     VisibilityTester* vis) const override;
   Float pdfLi(const Interaction&, const Vector3f&) const override { return 0; }
+  Spectrum sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                    Normal3f* nLight, Float* pdfPos, Float* pdfDir) const override;
+  void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   // What crosses the scene's bounding disk: L π R² (R from preprocess).
   Spectrum power() const override { return radiance_ * (kPi * sceneRadius_ * sceneRadius_); }
   bool isDelta() const override { return true; }

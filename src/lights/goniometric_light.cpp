@@ -1,5 +1,7 @@
 #include "lights/goniometric_light.h"
 
+#include "core/sampling.h"
+
 namespace candela {
 
 GoniometricLight::GoniometricLight(const Transform& lightToWorld, const Spectrum& intensity,
@@ -47,6 +49,26 @@ Spectrum GoniometricLight::power() const {
     for (int i = 0; i < w; ++i) sum += image_->texel(0, i, j) * cell;
   }
   return intensity_ * sum;
+}
+
+}  // namespace candela
+
+namespace candela {
+
+// Uniform directions over the sphere, weighted by the diagram (pbrt 3e §16.1).
+Spectrum GoniometricLight::sampleLe(const Point2f&, const Point2f& uDir, Float time, Ray* ray,
+                                    Normal3f* nLight, Float* pdfPos, Float* pdfDir) const {
+  Vector3f d = sampleUniformSphere(uDir);
+  *ray = Ray(position_, d, kInfinity, time);
+  *nLight = Normal3f(d.x, d.y, d.z);
+  *pdfPos = 1;
+  *pdfDir = uniformSpherePdf();
+  return intensity_ * scale(d);
+}
+
+void GoniometricLight::pdfLe(const Ray&, const Normal3f&, Float* pdfPos, Float* pdfDir) const {
+  *pdfPos = 1;
+  *pdfDir = uniformSpherePdf();
 }
 
 }  // namespace candela

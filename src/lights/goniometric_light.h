@@ -23,6 +23,9 @@ class GoniometricLight : public Light {
   Spectrum sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi, Float* pdf,
                     VisibilityTester* vis) const override;
   Float pdfLi(const Interaction&, const Vector3f&) const override { return 0; }
+  Spectrum sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                    Normal3f* nLight, Float* pdfPos, Float* pdfDir) const override;
+  void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   // I times Σ texel × the solid angle of its (θ, φ) cell (exact for a constant image; pbrt-v2
   // takes 4π times the plain image mean, which ignores that rows near the poles cover less).
   Spectrum power() const override;

@@ -39,7 +39,8 @@ Point2f InfiniteAreaLight::lookupCoordinates(const Vector3f& w, Float* sinTheta)
   }
   wl = wl / len;
   Float cosTheta = clamp(wl.z, -1, 1);
-  *sinTheta = std::sqrt(std::max(Float(0), 1 - cosTheta * cosTheta));
+  // From x and y rather than sqrt(1 - cos²): accurate near the poles, where the pdf divides by it.
+  *sinTheta = std::min(Float(1), std::sqrt(wl.x * wl.x + wl.y * wl.y));
   Float phi = std::atan2(wl.y, wl.x);
   if (phi < 0) phi += 2 * kPi;
   return Point2f(phi * kInv2Pi, std::acos(cosTheta) * kInvPi);
@@ -105,6 +106,36 @@ Spectrum InfiniteAreaLight::power() const {
     integral = radiance_ * sum;
   }
   return integral * (kPi * sceneRadius_ * sceneRadius_);
+}
+
+}  // namespace candela
+
+namespace candela {
+
+// The direction toward the sky as sampleLi picks it, the origin uniform on the disk of the scene's
+// bounding radius R facing it, one R out; the ray travels back into the scene (pbrt 3e §16.1).
+Spectrum InfiniteAreaLight::sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                                     Normal3f* nLight, Float* pdfPos, Float* pdfDir) const {
+  Vector3f wi;
+  VisibilityTester unused;
+  Spectrum L = sampleLi(Interaction(sceneCenter_, time), uDir, &wi, pdfDir, &unused);
+  if (*pdfDir == 0) {
+    *pdfPos = 0;
+    return Spectrum(0);
+  }
+  Vector3f v1, v2;
+  coordinateSystem(wi, &v1, &v2);
+  Point2f c = sampleUniformDiskConcentric(uPos);
+  Point3f o = sceneCenter_ + (wi + v1 * c.x + v2 * c.y) * sceneRadius_;
+  *ray = Ray(o, -wi, kInfinity, time);
+  *nLight = Normal3f(-wi.x, -wi.y, -wi.z);
+  *pdfPos = 1 / (kPi * sceneRadius_ * sceneRadius_);
+  return L;
+}
+
+void InfiniteAreaLight::pdfLe(const Ray& ray, const Normal3f&, Float* pdfPos, Float* pdfDir) const {
+  *pdfDir = pdfLi(Interaction(ray.o, ray.time), -ray.d);
+  *pdfPos = 1 / (kPi * sceneRadius_ * sceneRadius_);
 }
 
 }  // namespace candela

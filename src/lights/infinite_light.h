@@ -33,6 +33,9 @@ class InfiniteAreaLight : public Light {
   Spectrum sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi, Float* pdf,
                     VisibilityTester* vis) const override;
   Float pdfLi(const Interaction& ref, const Vector3f& wi) const override;
+  Spectrum sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                    Normal3f* nLight, Float* pdfPos, Float* pdfDir) const override;
+  void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   // What crosses the scene's bounding disk from all directions: π R² ∫ L dω.
   Spectrum power() const override;
   bool isDelta() const override { return false; }

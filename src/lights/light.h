@@ -1,5 +1,11 @@
 // Light sources (lrt draft ch. 13, sampling §15.4). sampleLi returns incident radiance (intensity
 // / r^2 for delta lights) toward ref, with the solid-angle pdf of the sampled direction.
+//
+// sampleLe starts a light subpath (pbrt 3e §12/§16.1; the draft's Sample_L(scene, u1..u4, ray,
+// pdf)): it returns the emitted radiance (intensity for point-like sources) along the ray. A delta
+// component (the position of a point source, the direction of a distant one) reports density 1,
+// the Dirac measured against itself, and pdfLe reports the same, so the two always agree;
+// integrators tell delta lights apart with isDelta().
 #pragma once
 
 #include "accel/aggregate.h"
@@ -23,6 +29,12 @@ class Light {
   virtual Spectrum sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi, Float* pdf,
                             VisibilityTester* vis) const = 0;
   virtual Float pdfLi(const Interaction& ref, const Vector3f& wi) const = 0;
+  // A ray leaving the light: origin density per area (pdfPos; for distant and infinite lights per
+  // area of the disk that covers the scene) and direction density per solid angle (pdfDir).
+  virtual Spectrum sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                            Normal3f* nLight, Float* pdfPos, Float* pdfDir) const = 0;
+  virtual void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos,
+                     Float* pdfDir) const = 0;
   virtual Spectrum power() const = 0;
   virtual bool isDelta() const = 0;
   // Radiance along a ray that escapes the scene (infinite lights).

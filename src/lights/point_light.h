@@ -13,6 +13,9 @@ class PointLight : public Light {
   Spectrum sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi, Float* pdf,
                     VisibilityTester* vis) const override;
   Float pdfLi(const Interaction&, const Vector3f&) const override { return 0; }
+  Spectrum sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                    Normal3f* nLight, Float* pdfPos, Float* pdfDir) const override;
+  void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   Spectrum power() const override { return intensity_ * (4 * kPi); }
   bool isDelta() const override { return true; }
   const Point3f& position() const { return position_; }

@@ -5,7 +5,8 @@ namespace candela {
 ProjectionLight::ProjectionLight(const Transform& lightToWorld, const Spectrum& intensity,
                                  Float fovDeg, std::shared_ptr<const MIPMap<Spectrum>> image,
                                  Float aspect)
-    : worldToLight_(inverse(lightToWorld)),
+    : lightToWorld_(lightToWorld),
+      worldToLight_(inverse(lightToWorld)),
       position_(lightToWorld(Point3f(0, 0, 0))),
       intensity_(intensity),
       image_(std::move(image)),
@@ -50,6 +51,42 @@ Spectrum ProjectionLight::power() const {
   Float solidAngle = 4 * std::asin(sinA * sinB);
   Spectrum mean = image_ ? image_->average() : Spectrum(1);
   return intensity_ * mean * solidAngle;
+}
+
+}  // namespace candela
+
+namespace candela {
+
+// Emission directions: a point uniform on the window at distance 1 (pbrt 3e §16.1 samples the
+// cone around the window instead, which wastes samples outside it). A plane patch dA at z = 1 seen
+// along a direction of angle θ to +z covers dω = cos³θ dA, so the solid-angle density is
+// 1 / (A cos³θ) for window area A.
+Float ProjectionLight::directionPdf(const Vector3f& wWorld) const {
+  Vector3f wl = worldToLight_(wWorld);
+  Float len = wl.length();
+  if (!(wl.z > 0) || len == 0) return 0;
+  Float x = wl.x / (wl.z * tanHalfFov_), y = wl.y / (wl.z * tanHalfFov_);
+  if (x < -screenX_ || x > screenX_ || y < -screenY_ || y > screenY_) return 0;
+  Float cosTheta = wl.z / len;
+  Float area = 4 * screenX_ * screenY_ * tanHalfFov_ * tanHalfFov_;
+  return 1 / (area * cosTheta * cosTheta * cosTheta);
+}
+
+Spectrum ProjectionLight::sampleLe(const Point2f&, const Point2f& uDir, Float time, Ray* ray,
+                                   Normal3f* nLight, Float* pdfPos, Float* pdfDir) const {
+  Float x = (2 * uDir.x - 1) * screenX_ * tanHalfFov_;
+  Float y = (2 * uDir.y - 1) * screenY_ * tanHalfFov_;
+  Vector3f d = normalize(lightToWorld_(Vector3f(x, y, 1)));
+  *ray = Ray(position_, d, kInfinity, time);
+  *nLight = Normal3f(d.x, d.y, d.z);
+  *pdfPos = 1;
+  *pdfDir = directionPdf(d);
+  return *pdfDir > 0 ? intensity_ * projection(d) : Spectrum(0);
+}
+
+void ProjectionLight::pdfLe(const Ray& ray, const Normal3f&, Float* pdfPos, Float* pdfDir) const {
+  *pdfPos = 1;
+  *pdfDir = directionPdf(ray.d);
 }
 
 }  // namespace candela

@@ -27,6 +27,9 @@ class ProjectionLight : public Light {
   Spectrum sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi, Float* pdf,
                     VisibilityTester* vis) const override;
   Float pdfLi(const Interaction&, const Vector3f&) const override { return 0; }
+  Spectrum sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                    Normal3f* nLight, Float* pdfPos, Float* pdfDir) const override;
+  void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   // I times the image's mean times the exact solid angle of the rectangular pyramid,
   // 4 asin(sin α sin β) for half-angles α, β (pbrt-v2 uses the cone around the diagonal instead,
   // which overestimates). Exact for a constant image.
@@ -36,7 +39,10 @@ class ProjectionLight : public Light {
   Spectrum projection(const Vector3f& wWorld) const;
 
  private:
-  Transform worldToLight_;
+  // Solid-angle density of sampleLe's directions (uniform over the window), 0 outside it.
+  Float directionPdf(const Vector3f& wWorld) const;
+
+  Transform lightToWorld_, worldToLight_;
   Point3f position_;
   Spectrum intensity_;
   std::shared_ptr<const MIPMap<Spectrum>> image_;

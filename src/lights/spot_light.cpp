@@ -1,5 +1,7 @@
 #include "lights/spot_light.h"
 
+#include "core/sampling.h"
+
 namespace candela {
 
 namespace {
@@ -24,6 +26,7 @@ SpotLight::SpotLight(const Transform& lightToWorld, const Spectrum& intensity, c
   axis = axis.lengthSquared() > 0 ? normalize(axis) : Vector3f(0, 0, 1);
   Transform toWorld =
       lightToWorld * translate(Vector3f(from.x, from.y, from.z)) * zToDirection(axis);
+  lightToWorld_ = toWorld;
   worldToLight_ = inverse(toWorld);
   position_ = toWorld(Point3f(0, 0, 0));
 }
@@ -58,6 +61,28 @@ Spectrum SpotLight::power() const {
   Float inner = 1 - cosFalloffStart_;
   Float band = std::max(Float(0), cosFalloffStart_ - cosTotalWidth_) / 5;
   return intensity_ * (2 * kPi * (inner + band));
+}
+
+}  // namespace candela
+
+namespace candela {
+
+// Directions uniform within the outer cone (pbrt 3e §16.1); the falloff weights them.
+Spectrum SpotLight::sampleLe(const Point2f&, const Point2f& uDir, Float time, Ray* ray,
+                             Normal3f* nLight, Float* pdfPos, Float* pdfDir) const {
+  Vector3f d = normalize(lightToWorld_(sampleUniformCone(uDir, cosTotalWidth_)));
+  *ray = Ray(position_, d, kInfinity, time);
+  *nLight = Normal3f(d.x, d.y, d.z);
+  *pdfPos = 1;
+  *pdfDir = uniformConePdf(cosTotalWidth_);
+  return intensity_ * falloff(d);
+}
+
+void SpotLight::pdfLe(const Ray& ray, const Normal3f&, Float* pdfPos, Float* pdfDir) const {
+  Vector3f wl = worldToLight_(ray.d);
+  Float len = wl.length();
+  *pdfPos = 1;
+  *pdfDir = (len > 0 && wl.z / len >= cosTotalWidth_) ? uniformConePdf(cosTotalWidth_) : 0;
 }
 
 }  // namespace candela

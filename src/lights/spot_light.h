@@ -21,6 +21,9 @@ class SpotLight : public Light {
   Spectrum sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi, Float* pdf,
                     VisibilityTester* vis) const override;
   Float pdfLi(const Interaction&, const Vector3f&) const override { return 0; }
+  Spectrum sampleLe(const Point2f& uPos, const Point2f& uDir, Float time, Ray* ray,
+                    Normal3f* nLight, Float* pdfPos, Float* pdfDir) const override;
+  void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   // The exact integral of the intensity over the sphere: 2π I ((1 - cosFalloffStart) +
   // (cosFalloffStart - cosTotalWidth) / 5), the 1/5 being ∫δ⁴ over the falloff band. (pbrt-v2
   // uses 1/2 there, i.e. a linear falloff; the two differ by 0.3 (cosF - cosW) 2π I.)
@@ -31,7 +34,7 @@ class SpotLight : public Light {
   const Point3f& position() const { return position_; }
 
  private:
-  Transform worldToLight_;  // the cone's axis is +z in light space
+  Transform lightToWorld_, worldToLight_;  // the cone's axis is +z in light space
   Point3f position_;
   Spectrum intensity_;
   Float cosTotalWidth_, cosFalloffStart_;

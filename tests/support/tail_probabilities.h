@@ -59,6 +59,8 @@ inline double poissonUpperTail(int64_t k, double lambda) {
   if (lambda <= 0) return 0;
   return gammaP(double(k), lambda);
 }
+// P(|Z| >= |z|) for Z standard normal.
+inline double normalTwoSidedTail(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }
 // The per-case significance that keeps the family-wise error at alpha over m independent cases.
 inline double sidak(double alpha, int m) { return 1 - std::pow(1 - alpha, 1.0 / m); }
 
