@@ -53,7 +53,10 @@ Spectrum photonIrradiance(const PhotonMap& map, const Point3f& p, const Normal3f
   if (map.empty() || est.nUsed <= 0) return Spectrum(0);
   Float r2;
   std::span<NearPhoton> photons = gather(map, p, est, arena, &r2);
-  if (photons.empty()) return Spectrum(0);
+  // When nUsed were found the farthest one only fixes the disc: counting it too would make the
+  // estimate nUsed / (nUsed - 1) too large for uniformly scattered photons (pbrt-v2 counts it).
+  if (photons.size() == size_t(est.nUsed)) photons = photons.first(photons.size() - 1);
+  if (photons.empty() || !(r2 > 0)) return Spectrum(0);
   Float scale = dropBrightest(&photons, est.nFilter) / (Float(map.nPaths()) * kPi * r2);
   Spectrum e(0);
   for (const NearPhoton& np : photons)

@@ -31,7 +31,8 @@ Spectrum photonRadiance(const PhotonMap& map, const Point3f& p, const Vector3f& 
                         const BSDF& bsdf, const DensityEstimate& est, MemoryArena& arena);
 
 // Irradiance at p on the side n faces, with a constant kernel over the final search disc
-// (pbrt 2e's EPhoton): photons arriving from behind n are not counted.
+// (pbrt 2e's EPhoton): photons arriving from behind n are not counted, nor the one on the rim
+// that fixed the disc.
 Spectrum photonIrradiance(const PhotonMap& map, const Point3f& p, const Normal3f& n,
                           const DensityEstimate& est, MemoryArena& arena);
 

@@ -18,6 +18,7 @@ class UberMaterial : public Material {
   explicit UberMaterial(const Textures& t, const Texture<Float>* bump = nullptr)
       : Material(bump), t_(t) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+  bool maybeSpecular() const override { return true; }
 
  private:
   Textures t_;

@@ -3,6 +3,7 @@
 #include "integrators/direct_lighting.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
+#include "scene/photon_map_params.h"
 #include "scene/plugin_factories.h"
 
 namespace candela {
@@ -59,8 +60,12 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
     bool cosSample = p.getOneBool("cossample", true);
     return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist, cosSample);
   }
-  throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
-                     {"ambientocclusion", "directlighting", "path", "whitted"});
+  // pbrt-v2 registers its photon mapper under both names; nothing differs.
+  if (desc.name == "photonmap" || desc.name == "exphotonmap")
+    return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
+  throwUnknownPlugin(
+      desc.loc, "surface integrator", desc.name,
+      {"ambientocclusion", "directlighting", "exphotonmap", "path", "photonmap", "whitted"});
 }
 
 }  // namespace candela

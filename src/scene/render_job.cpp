@@ -27,6 +27,7 @@ std::string BuildStats::report() const {
   os << "  textures loaded  " << textures << "\n";
   os << "  aggregate  " << aggregate.name << "\n";
   for (const auto& [what, n] : aggregate.counts) os << "  " << what << "  " << n << "\n";
+  for (const auto& [what, n] : integrator) os << "  integrator: " << what << "  " << n << "\n";
   return os.str();
 }
 
@@ -249,7 +250,18 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   for (const auto& l : job.lights) lights.push_back(l.get());
   job.scene = std::make_unique<Scene>(job.aggregate.get(), std::move(lights));
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
-  job.integrator->preprocess(*job.scene);
+  PreprocessOptions pre;
+  pre.seed = options.seed;
+  pre.nThreads = options.nThreads;
+  pre.showProgress = options.showProgress;
+  pre.sceneHasSpecular = false;
+  for (const auto& m : job.materials) pre.sceneHasSpecular |= m->maybeSpecular();
+  if (options.warn)
+    pre.warn = [warn = options.warn, loc = integratorDesc.loc](const std::string& message) {
+      warn(loc, message);
+    };
+  job.integrator->prepare(*job.scene, pre);
+  job.stats.integrator = job.integrator->buildCounts();
   return job;
 }
 

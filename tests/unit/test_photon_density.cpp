@@ -129,7 +129,7 @@ TEST(PhotonDensity, UniformPhotonsOnADiffusePlaneGiveTheClosedFormRadiance) {
     l = photonRadiance(map, p, wo, bsdf, nearest, arena);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(l[c] / expected[c], 1, 1e-3) << c;
     // Irradiance, with a constant kernel over that disc: 500 photons over pi r^2 counts lattice
-    // points in a disc, whose error is O(k^-3/4) (measured 0.3%; 1% allowed).
+    // points in a disc, whose error is O(k^-3/4) (measured 0.1%; 1% allowed).
     Spectrum e = photonIrradiance(map, p, Normal3f(0, 0, 1), nearest, arena);
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(e[c] / (alpha[c] / (h * h * Float(nPaths))), 1, 0.01) << c;
