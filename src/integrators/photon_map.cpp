@@ -15,7 +15,9 @@ PointKdTree<3> treeOf(const std::vector<T>& items) {
 }  // namespace
 
 PhotonMap::PhotonMap(std::vector<Photon> photons, uint64_t nPaths)
-    : photons_(std::move(photons)), nPaths_(nPaths), tree_(treeOf(photons_)) {}
+    : photons_(std::move(photons)), nPaths_(nPaths), tree_(treeOf(photons_)) {
+  photons_.shrink_to_fit();
+}
 
 size_t PhotonMap::memoryBytes() const {
   return photons_.capacity() * sizeof(Photon) + tree_.memoryBytes();
@@ -43,7 +45,9 @@ int PhotonMap::nearest(const Point3f& p, Float maxDist2, std::span<NearPhoton> o
 }
 
 RadiancePhotonMap::RadiancePhotonMap(std::vector<RadiancePhoton> photons)
-    : photons_(std::move(photons)), tree_(treeOf(photons_)) {}
+    : photons_(std::move(photons)), tree_(treeOf(photons_)) {
+  photons_.shrink_to_fit();
+}
 
 size_t RadiancePhotonMap::memoryBytes() const {
   return photons_.capacity() * sizeof(RadiancePhoton) + tree_.memoryBytes();

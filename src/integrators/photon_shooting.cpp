@@ -19,17 +19,16 @@ namespace candela {
 
 namespace {
 
-// Paths per block (pbrt-v2 merges its tasks' photons every 4096 paths), blocks
-// per parallel batch.
+// Paths per block (pbrt-v2 merges its tasks' photons every 4096 paths), and the most blocks per
+// parallel batch; batches start at one block and double, so that small maps shoot few paths.
 constexpr uint64_t kBlockPaths = 4096;
-constexpr uint64_t kBlocksPerBatch = 16;
-// pbrt-v2's give-up rule: past 500,000 paths, a map still storing fewer than
-// one photon per 1024 paths is not going to fill in reasonable time.
+constexpr uint64_t kMaxBlocksPerBatch = 16;
+// pbrt-v2's give-up rule: past 500,000 paths, a map still storing fewer than one photon per 1024
+// paths is not going to fill in reasonable time.
 constexpr uint64_t kGiveUpAfterPaths = 500000;
 constexpr uint64_t kGiveUpPathsPerPhoton = 1024;
 constexpr Float kRadiancePhotonFraction = 0.125f;  // pbrt 2e §15.6.3
-// Low-discrepancy dimensions per path: light choice, position (2), direction
-// (2), first bounce (3).
+// Low-discrepancy dimensions per path: light choice, position (2), direction (2), first bounce (3).
 constexpr int kQuasiRandomDims = 8;
 constexpr int kRhoSamples = 16;
 
@@ -44,8 +43,8 @@ struct BlockResult {
   std::vector<RadiancePhotonSite> sites;
 };
 
-// What one batch may deposit, fixed before the batch starts so that it does not
-// depend on which block finishes first.
+// What one batch may deposit, fixed before the batch starts so that it does not depend on which
+// block finishes first.
 struct Accepting {
   bool kind[kPhotonKinds] = {false, false, false};
   bool any() const { return kind[0] || kind[1] || kind[2]; }
@@ -75,8 +74,8 @@ class PhotonTracer {
     Spectrum le = light.sampleLe(Point2f(u[1], u[2]), Point2f(u[3], u[4]), 0, &lightRay, &nLight,
                                  &pdfPos, &pdfDir);
     if (le.isBlack() || pdfPos == 0 || pdfDir == 0) return;
-    // Path weight of the emitted particle, pbrt 2e eq. 15.16; lights whose
-    // "normal" is zero (none of candela's) would have no cosine.
+    // Path weight of the emitted particle, pbrt 2e eq. 15.16; lights whose "normal" is zero (none
+    // of candela's) would have no cosine.
     Float cosTheta = nLight == Normal3f(0, 0, 0) ? 1 : absDot(nLight, normalize(lightRay.d));
     Spectrum alpha = le * (cosTheta / (lightPmf * pdfPos * pdfDir));
     if (alpha.isBlack() || !alpha.isFinite()) return;
@@ -113,8 +112,7 @@ class PhotonTracer {
       }
       if (nIntersections >= plan_.maxPhotonDepth) break;
 
-      // Scatter: the first bounce takes low-discrepancy numbers, later ones
-      // pseudo-random ones.
+      // Scatter: the first bounce takes low-discrepancy numbers, later ones pseudo-random ones.
       bool first = nIntersections == 1;
       Float uc = first ? u[5] : rng.uniformFloat();
       Point2f u2 = first ? Point2f(u[6], u[7]) : Point2f(rng.uniformFloat(), rng.uniformFloat());
@@ -124,8 +122,8 @@ class PhotonTracer {
       Spectrum f = bsdf->sampleF(isect.wo, &wi, uc, u2, &pdf, kAllBxDF, &type);
       if (f.isBlack() || pdf == 0) break;
       Spectrum next = alpha * f * (absDot(wi, bsdf->shadingNormal()) / pdf);
-      // Russian roulette that keeps the photon's luminance (pbrt 2e §15.6.1):
-      // equal-weight photons give the density estimates the least variance.
+      // Russian roulette that keeps the photon's luminance (pbrt 2e §15.6.1): equal-weight photons
+      // give the density estimates the least variance.
       Float continueProb = std::min(Float(1), next.y() / alpha.y());
       if (!(continueProb > 0) || rng.uniformFloat() >= continueProb) break;
       alpha = next / continueProb;
@@ -173,8 +171,7 @@ PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& 
     fills[d].done = fills[in].done;
   }
 
-  // Hammersley points for the radiance photons' reflectances (exact for
-  // Lambertian surfaces).
+  // Hammersley points for the radiance photons' reflectances (exact for Lambertian surfaces).
   std::vector<Point2f> rhoU1, rhoU2;
   for (int i = 0; i < kRhoSamples; ++i) {
     rhoU1.emplace_back((i + Float(0.5)) / kRhoSamples, radicalInverse(uint32_t(i), 2));
@@ -193,10 +190,11 @@ PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& 
   constexpr uint64_t kMaxPaths = std::numeric_limits<uint32_t>::max();
   uint64_t shot = 0;
   auto anyOpen = [&] { return !fills[0].done || !fills[1].done || !fills[2].done; };
-  while (anyOpen()) {
+  for (uint64_t batchBlocks = 1; anyOpen();
+       batchBlocks = std::min(kMaxBlocksPerBatch, 2 * batchBlocks)) {
     Accepting accepting;
     for (int k = 0; k < kPhotonKinds; ++k) accepting.kind[k] = !fills[k].done;
-    uint64_t blocks = std::min(kBlocksPerBatch, (kMaxPaths - shot) / kBlockPaths);
+    uint64_t blocks = std::min(batchBlocks, (kMaxPaths - shot) / kBlockPaths);
     std::vector<BlockResult> results(blocks);
     arena.execute([&] {
       tbb::parallel_for(uint64_t(0), blocks, [&](uint64_t b) {
@@ -207,9 +205,8 @@ PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& 
           tracer.trace(i, accepting, mem, &results[b], stats);
       });
     });
-    // Concatenate in block order; a map that fills takes the photons of paths
-    // up to the one that filled it, and divides by the number of paths up to
-    // that one.
+    // Concatenate in block order; a map that fills takes the photons of paths up to the one that
+    // filled it, and divides by the number of paths up to that one.
     int64_t stored = 0;
     auto full = [&](int k) { return int64_t(fills[k].shot.photons.size()) >= fills[k].wanted; };
     for (const BlockResult& r : results) {
