@@ -103,6 +103,12 @@ TEST(PhotonMapBuild, OnlyTheMapsTheSceneAndSettingsNeed) {
   auto mirror = test::buildSceneText(test::causticRoom(4, 1, kSmallPhotonMap, "\"mirror\""));
   EXPECT_FALSE(photonIntegrator(mirror).causticMap().empty());
   EXPECT_GT(mirror.job().stats.integrator.at("caustic photons"), 0);
+  // uber is specular only with a mirror term or some transparency.
+  auto uber = test::buildSceneText(test::causticRoom(4, 1, kSmallPhotonMap, "\"uber\""));
+  EXPECT_TRUE(photonIntegrator(uber).causticMap().empty());
+  auto uberKr = test::buildSceneText(
+      test::causticRoom(4, 1, kSmallPhotonMap, "\"uber\" \"rgb Kr\" [0.5 0.5 0.5]"));
+  EXPECT_FALSE(photonIntegrator(uberKr).causticMap().empty());
 
   // No final gather: no radiance photons; direct photons only for directwithphotons.
   auto plain = test::buildSceneText(
