@@ -84,6 +84,9 @@ void PhotonMapIntegrator::computeRadiancePhotons(std::vector<RadiancePhotonSite>
 
 Spectrum PhotonMapIntegrator::directLight(const SurfaceInteraction& isect, const BSDF& bsdf,
                                           const Scene& scene, IntegratorContext& ctx) const {
+  // A purely specular surface reflects nothing from any of these estimates (its recursion is the
+  // caller's): skip their photon lookups.
+  if (bsdf.numComponents(kAllBxDF & ~kSpecular) == 0) return Spectrum(0);
   Spectrum l(0);
   if (settings_.directWithPhotons)
     l += photonRadiance(direct_, isect.p, isect.wo, bsdf, estimate_, ctx.arena);
