@@ -25,6 +25,7 @@ struct PreprocessOptions {
   int nThreads = 0;   // 0: all cores
   bool showProgress = false;
   bool sceneHasSpecular = true;                  // some material may scatter perfectly specularly
+  Float shutterOpen = 0, shutterClose = 0;       // the camera's: the times a prepass samples
   std::function<void(const std::string&)> warn;  // may be empty
 };
 

@@ -33,6 +33,8 @@ void PhotonMapIntegrator::prepare(const Scene& scene, const PreprocessOptions& o
   plan.radianceSites = radiancePhotons;
   plan.maxPhotonDepth = s.maxPhotonDepth;
   plan.seed = options.seed;
+  plan.shutterOpen = options.shutterOpen;
+  plan.shutterClose = options.shutterClose;
   plan.nThreads = options.nThreads;
   plan.showProgress = options.showProgress;
   plan.warn = options.warn;

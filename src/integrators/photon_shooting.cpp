@@ -28,8 +28,9 @@ constexpr uint64_t kMaxBlocksPerBatch = 16;
 constexpr uint64_t kGiveUpAfterPaths = 500000;
 constexpr uint64_t kGiveUpPathsPerPhoton = 1024;
 constexpr Float kRadiancePhotonFraction = 0.125f;  // pbrt 2e §15.6.3
-// Low-discrepancy dimensions per path: light choice, position (2), direction (2), first bounce (3).
-constexpr int kQuasiRandomDims = 8;
+// Low-discrepancy dimensions per path: light choice, position (2), direction (2), first bounce (3),
+// time.
+constexpr int kQuasiRandomDims = 9;
 constexpr int kRhoSamples = 16;
 
 const char* kindName(int kind) {
@@ -71,7 +72,8 @@ class PhotonTracer {
     Ray lightRay;
     Normal3f nLight;
     Float pdfPos, pdfDir;
-    Spectrum le = light.sampleLe(Point2f(u[1], u[2]), Point2f(u[3], u[4]), 0, &lightRay, &nLight,
+    Float time = plan_.shutterOpen + u[8] * (plan_.shutterClose - plan_.shutterOpen);
+    Spectrum le = light.sampleLe(Point2f(u[1], u[2]), Point2f(u[3], u[4]), time, &lightRay, &nLight,
                                  &pdfPos, &pdfDir);
     if (le.isBlack() || pdfPos == 0 || pdfDir == 0) return;
     // Path weight of the emitted particle, pbrt 2e eq. 15.16; lights whose "normal" is zero (none

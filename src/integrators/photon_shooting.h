@@ -31,7 +31,8 @@ struct PhotonShootingPlan {
   bool radianceSites = false;  // record radiance-photon sites (final gathering)
   int maxPhotonDepth = 5;      // surface interactions per path
   uint64_t seed = 0;
-  int nThreads = 0;  // 0: all cores
+  Float shutterOpen = 0, shutterClose = 0;  // each path at a time in between, as camera rays
+  int nThreads = 0;                         // 0: all cores
   bool showProgress = false;
   std::function<void(const std::string&)> warn;  // may be empty
 };

@@ -254,6 +254,8 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   pre.seed = options.seed;
   pre.nThreads = options.nThreads;
   pre.showProgress = options.showProgress;
+  pre.shutterOpen = job.camera->shutterOpen();
+  pre.shutterClose = job.camera->shutterClose();
   pre.sceneHasSpecular = false;
   for (const auto& m : job.materials) pre.sceneHasSpecular |= m->maybeSpecular();
   if (options.warn)
