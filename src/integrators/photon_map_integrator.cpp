@@ -27,9 +27,10 @@ void PhotonMapIntegrator::prepare(const Scene& scene, const PreprocessOptions& o
   // photons for its radiance photons (then they live only through the preprocess).
   plan.wanted[int(PhotonKind::Caustic)] = options.sceneHasSpecular ? s.causticPhotons : 0;
   plan.wanted[int(PhotonKind::Indirect)] = s.indirectPhotons;
-  plan.wanted[int(PhotonKind::Direct)] = s.directWithPhotons ? s.directPhotons : 0;
+  bool directMap = s.directWithPhotons && s.directPhotons > 0;
+  plan.wanted[int(PhotonKind::Direct)] = directMap ? s.directPhotons : 0;
   bool radiancePhotons = s.finalGather && s.indirectPhotons > 0;
-  plan.directFollowsIndirect = radiancePhotons && !s.directWithPhotons;
+  plan.directFollowsIndirect = radiancePhotons && !directMap;
   plan.radianceSites = radiancePhotons;
   plan.maxPhotonDepth = s.maxPhotonDepth;
   plan.seed = options.seed;
@@ -49,7 +50,7 @@ void PhotonMapIntegrator::prepare(const Scene& scene, const PreprocessOptions& o
   PhotonMap direct = build(PhotonKind::Direct);
   if (radiancePhotons)
     computeRadiancePhotons(std::move(shot.radianceSites), direct, options.nThreads);
-  if (s.directWithPhotons) direct_ = std::move(direct);
+  if (directMap) direct_ = std::move(direct);
 }
 
 void PhotonMapIntegrator::computeRadiancePhotons(std::vector<RadiancePhotonSite> sites,
@@ -90,7 +91,8 @@ Spectrum PhotonMapIntegrator::directLight(const SurfaceInteraction& isect, const
   // caller's): skip their photon lookups.
   if (bsdf.numComponents(kAllBxDF & ~kSpecular) == 0) return Spectrum(0);
   Spectrum l(0);
-  if (settings_.directWithPhotons)
+  // Without a direct map (no direct photons wanted, or none stored) the lights are sampled.
+  if (settings_.directWithPhotons && !direct_.empty())
     l += photonRadiance(direct_, isect.p, isect.wo, bsdf, estimate_, ctx.arena);
   else
     l += uniformSampleAllLights(isect, bsdf, scene, ctx);

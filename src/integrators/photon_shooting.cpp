@@ -244,7 +244,8 @@ PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& 
     bool giveUpTime = shot > kGiveUpAfterPaths;
     for (int k = 0; k < kPhotonKinds; ++k) {
       MapFill& f = fills[k];
-      if (f.done) continue;
+      // Direct photons that follow the indirect ones end with them.
+      if (f.done || (k == d && plan.directFollowsIndirect)) continue;
       if ((giveUpTime && uint64_t(f.shot.photons.size()) < shot / kGiveUpPathsPerPhoton) ||
           shot + kBlockPaths > kMaxPaths) {
         f.done = true;
