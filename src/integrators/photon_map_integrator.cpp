@@ -40,6 +40,8 @@ void PhotonMapIntegrator::prepare(const Scene& scene, const PreprocessOptions& o
   plan.showProgress = options.showProgress;
   plan.warn = options.warn;
   PhotonShootingResult shot = shootPhotons(scene, plan);
+  photonPaths_ = shot.pathsShot;
+  photonRays_ = shot.rays.intersectionRays;
 
   auto build = [&](PhotonKind kind) {
     ShotPhotons& m = shot.maps[int(kind)];
@@ -121,6 +123,10 @@ std::map<std::string, long> PhotonMapIntegrator::buildCounts() const {
   add("indirect", indirect_.size(), indirect_.memoryBytes());
   add("direct", direct_.size(), direct_.memoryBytes());
   add("radiance", radiance_.size(), radiance_.memoryBytes());
+  if (photonPaths_ > 0) {
+    counts["photon paths shot"] = long(photonPaths_);
+    counts["photon rays traced"] = long(photonRays_);
+  }
   return counts;
 }
 

@@ -54,6 +54,7 @@ class PhotonMapIntegrator : public SpecularRecursionIntegrator {
   FinalGatherSettings gather_;
   PhotonMap caustic_, indirect_, direct_;
   RadiancePhotonMap radiance_;
+  uint64_t photonPaths_ = 0, photonRays_ = 0;
 };
 
 }  // namespace candela

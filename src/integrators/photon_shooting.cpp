@@ -42,6 +42,7 @@ struct BlockResult {
   std::vector<Photon> photons[kPhotonKinds];
   std::vector<uint64_t> paths[kPhotonKinds];  // the path index of each photon
   std::vector<RadiancePhotonSite> sites;
+  RayStats rays;
 };
 
 // What one batch may deposit, fixed before the batch starts so that it does not depend on which
@@ -55,14 +56,22 @@ class PhotonTracer {
  public:
   PhotonTracer(const Scene& scene, const PhotonShootingPlan& plan, const Distribution1D& lights,
                std::span<const Point2f> rhoU1, std::span<const Point2f> rhoU2)
-      : scene_(scene), plan_(plan), lights_(lights), rhoU1_(rhoU1), rhoU2_(rhoU2) {}
+      : scene_(scene), plan_(plan), lights_(lights), rhoU1_(rhoU1), rhoU2_(rhoU2) {
+    // The Halton points are rotated by a seed-dependent shift per dimension (Cranley and
+    // Patterson 1976): still low-discrepancy, a different set per seed, and far cheaper per path
+    // than digit scrambling.
+    for (int d = 0; d < kQuasiRandomDims; ++d)
+      shift_[d] =
+          Float(mixBits(hashValues({plan.seed, uint64_t(d), 0x70686f746f6eULL})) >> 40) * 0x1p-24f;
+  }
 
   void trace(uint64_t index, const Accepting& accepting, MemoryArena& arena, BlockResult* out,
              RayStats& stats) const {
     std::array<Float, kQuasiRandomDims> u;
-    for (int d = 0; d < kQuasiRandomDims; ++d)
-      u[d] = scrambledRadicalInverse(uint32_t(index), kPrimes[d],
-                                     hashValues({plan_.seed, uint64_t(d), 0x70686f746f6eULL}));
+    for (int d = 0; d < kQuasiRandomDims; ++d) {
+      Float v = radicalInverse(uint32_t(index), kPrimes[d]) + shift_[d];
+      u[d] = std::min(v >= 1 ? v - 1 : v, kOneMinusEpsilon);
+    }
     RNG rng(hashValues({plan_.seed, index}));
 
     Float lightPmf;
@@ -124,6 +133,13 @@ class PhotonTracer {
       Spectrum f = bsdf->sampleF(isect.wo, &wi, uc, u2, &pdf, kAllBxDF, &type);
       if (f.isBlack() || pdf == 0) break;
       Spectrum next = alpha * f * (absDot(wi, bsdf->shadingNormal()) / pdf);
+      // Refraction scales radiance by (eta_o / eta_i)^2 but not the power particles carry: a
+      // photon uses the adjoint BSDF, without that factor (Veach 1997 §5.2; pbrt 2e's photon
+      // shooting keeps it, which is harmless only when the path leaves the dielectric again).
+      if ((type & kTransmission) && bsdf->eta != 1) {
+        Float e2 = bsdf->eta * bsdf->eta;
+        next *= dot(isect.wo, bsdf->shadingNormal()) > 0 ? e2 : 1 / e2;
+      }
       // Russian roulette that keeps the photon's luminance (pbrt 2e §15.6.1): equal-weight photons
       // give the density estimates the least variance.
       Float continueProb = std::min(Float(1), next.y() / alpha.y());
@@ -131,6 +147,10 @@ class PhotonTracer {
       alpha = next / continueProb;
       if (!alpha.isFinite()) break;
       specularPath = specularPath && (type & kSpecular) != 0;
+      // Past the first surface a path can only add caustic photons while it stays specular, and
+      // indirect ones: once the maps it could still add to are full, it is done.
+      bool caustic = specularPath && accepting.kind[int(PhotonKind::Caustic)];
+      if (!caustic && !accepting.kind[int(PhotonKind::Indirect)]) break;
       ray = RayDifferential(isect.spawnRay(wi));
     }
     arena.reset();
@@ -141,6 +161,7 @@ class PhotonTracer {
   const PhotonShootingPlan& plan_;
   const Distribution1D& lights_;
   std::span<const Point2f> rhoU1_, rhoU2_;
+  std::array<Float, kQuasiRandomDims> shift_;
 };
 
 // A map being filled: photons in path order until it has what it wants.
@@ -201,10 +222,9 @@ PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& 
     arena.execute([&] {
       tbb::parallel_for(uint64_t(0), blocks, [&](uint64_t b) {
         MemoryArena mem;
-        RayStats stats;
         uint64_t first = shot + b * kBlockPaths;
         for (uint64_t i = first; i < first + kBlockPaths; ++i)
-          tracer.trace(i, accepting, mem, &results[b], stats);
+          tracer.trace(i, accepting, mem, &results[b], results[b].rays);
       });
     });
     // Concatenate in block order; a map that fills takes the photons of paths up to the one that
@@ -227,6 +247,7 @@ PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& 
         }
       }
       result.radianceSites.insert(result.radianceSites.end(), r.sites.begin(), r.sites.end());
+      result.rays += r.rays;
     }
     shot += blocks * kBlockPaths;
     for (int k : {c, in, d}) {

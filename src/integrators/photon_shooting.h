@@ -53,6 +53,7 @@ struct PhotonShootingResult {
   ShotPhotons maps[kPhotonKinds];
   std::vector<RadiancePhotonSite> radianceSites;
   uint64_t pathsShot = 0;
+  RayStats rays;  // traced while shooting
 };
 
 PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& plan);
