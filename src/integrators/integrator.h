@@ -24,6 +24,7 @@ struct PreprocessOptions {
   uint64_t seed = 0;  // the render's seed: a prepass's random numbers derive from it
   int nThreads = 0;   // 0: all cores
   bool showProgress = false;
+  bool quick = false;                            // --quick: a cheaper, rougher prepass
   bool sceneHasSpecular = true;                  // some material may scatter perfectly specularly
   Float shutterOpen = 0, shutterClose = 0;       // the camera's: the times a prepass samples
   std::function<void(const std::string&)> warn;  // may be empty

@@ -46,6 +46,7 @@ class PhotonMapIntegrator : public SpecularRecursionIntegrator {
                        IntegratorContext& ctx) const override;
 
  private:
+  void deriveLookups();  // estimate_ and gather_ from settings_
   void computeRadiancePhotons(std::vector<RadiancePhotonSite> sites, const PhotonMap& direct,
                               int nThreads);
 

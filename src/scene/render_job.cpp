@@ -254,6 +254,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   pre.seed = options.seed;
   pre.nThreads = options.nThreads;
   pre.showProgress = options.showProgress;
+  pre.quick = options.quick;
   pre.shutterOpen = job.camera->shutterOpen();
   pre.shutterClose = job.camera->shutterClose();
   pre.sceneHasSpecular = false;

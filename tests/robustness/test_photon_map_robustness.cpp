@@ -205,5 +205,19 @@ TEST(PhotonMapBuild, PhotonsSpanTheShutterAsCameraRaysDo) {
     ASSERT_NEAR(p.p.y, -1, 1e-4);
 }
 
+TEST(PhotonMapBuild, QuickShootsATenthOfThePhotons) {
+  std::string scene = test::causticRoom(4, 1, kSmallPhotonMap);
+  BuildOptions quick;
+  quick.quick = true;
+  auto r = test::buildSceneText(scene, quick);
+  const PhotonMapIntegrator& pm = photonIntegrator(r);
+  EXPECT_GE(pm.causticMap().size(), 100u);
+  EXPECT_LT(pm.causticMap().size(), 110u);
+  EXPECT_GE(pm.indirectMap().size(), 400u);
+  EXPECT_LT(pm.indirectMap().size(), 410u);
+  EXPECT_EQ(pm.settings().nUsed, 5);
+  EXPECT_EQ(pm.settings().finalGatherSamples, 2);
+}
+
 }  // namespace
 }  // namespace candela
