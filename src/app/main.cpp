@@ -81,6 +81,8 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
     return loadTextureImage(path, colorSpace, writer.colorManagement(), writer.workingSpace());
   };
   if (!cli.quiet) build.warn = printWarning;
+  build.nThreads = cli.nThreads;
+  build.showProgress = !cli.quiet;
   RenderJob job = buildRenderJob(desc, build, device);
   if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
 

@@ -19,6 +19,9 @@ class Camera {
   // Also fills the offset rays one pixel over in x and y. The default calls generateRay three
   // times.
   virtual Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const;
+  // The times the camera's rays span (prepasses such as photon shooting sample the same).
+  virtual Float shutterOpen() const { return 0; }
+  virtual Float shutterClose() const { return 0; }
 };
 
 // The camera named by a Camera statement ("perspective", "orthographic" or "environment"), with

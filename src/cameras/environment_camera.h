@@ -30,6 +30,8 @@ class EnvironmentCamera final : public Camera {
   Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const override;
 
   const EnvironmentCameraOptions& options() const { return options_; }
+  Float shutterOpen() const override { return options_.shutterOpen; }
+  Float shutterClose() const override { return options_.shutterClose; }
   const AnimatedTransform& cameraToWorld() const { return cameraToWorld_; }
   // The camera-space unit direction for a raster position (the formulas above).
   Vector3f cameraDirection(const Point2f& pRaster) const;

@@ -35,8 +35,8 @@ class ProjectiveCamera : public Camera {
 
   const AnimatedTransform& cameraToWorld() const { return cameraToWorld_; }
   const ProjectiveCameraOptions& projectiveOptions() const { return options_; }
-  Float shutterOpen() const { return options_.shutterOpen; }
-  Float shutterClose() const { return options_.shutterClose; }
+  Float shutterOpen() const override { return options_.shutterOpen; }
+  Float shutterClose() const override { return options_.shutterClose; }
 
   // Screen space (lrt draft §6.1): raster (0, 0) is the screen window's top-left corner
   // (xmin, ymax), raster (xres, yres) its bottom-right corner (xmax, ymin).

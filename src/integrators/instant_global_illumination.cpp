@@ -21,7 +21,7 @@ const int kNonSpecular = kAllBxDF & ~kSpecular;
 
 }  // namespace
 
-void InstantGlobalIlluminationIntegrator::preprocess(const Scene& scene) {
+void InstantGlobalIlluminationIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
   vpls_ = traceVirtualPointLights(scene, params_.nSets, params_.pathsPerSet);
 }
 

@@ -27,7 +27,7 @@ struct IgiParameters {
 class InstantGlobalIlluminationIntegrator : public SurfaceIntegrator {
  public:
   explicit InstantGlobalIlluminationIntegrator(const IgiParameters& params) : params_(params) {}
-  void preprocess(const Scene& scene) override;
+  void preprocess(const Scene& scene, const PreprocessOptions&) override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
   std::string statsReport() const override;

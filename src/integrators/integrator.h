@@ -29,10 +29,23 @@ struct IntegratorContext {
   RayStats& stats;
 };
 
+// What preprocess may use from the build besides the scene.
+struct PreprocessOptions {
+  uint64_t seed = 0;  // the render's seed: a prepass's random numbers derive from it
+  int nThreads = 0;   // 0: all cores
+  bool showProgress = false;
+  bool quick = false;                            // --quick: a cheaper, rougher prepass
+  bool sceneHasSpecular = true;                  // some material may scatter perfectly specularly
+  Float shutterOpen = 0, shutterClose = 0;       // the camera's: the times a prepass samples
+  std::function<void(const std::string&)> warn;  // may be empty
+};
+
 class SurfaceIntegrator {
  public:
   virtual ~SurfaceIntegrator() = default;
-  virtual void preprocess(const Scene&) {}
+  // Work done once at scene build, before the camera and film matter (photon maps, virtual
+  // point lights); deterministic for any thread count.
+  virtual void preprocess(const Scene&, const PreprocessOptions&) {}
   // Work that needs the camera and the film: the renderer calls it before the first pixel of
   // every render, and an integrator that has already done its work returns at once. What it
   // builds must be a function of (scene, camera, film resolution, sampler seed) only, never of

@@ -13,6 +13,7 @@ class GlassMaterial : public Material {
                 const Texture<Float>* index, const Texture<Float>* bump = nullptr)
       : Material(bump), kr_(kr), kt_(kt), index_(index) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+  bool maybeSpecular() const override { return true; }
 
  private:
   const Texture<Spectrum>*kr_, *kt_;

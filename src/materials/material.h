@@ -14,6 +14,9 @@ class Material {
   explicit Material(const Texture<Float>* bump = nullptr) : bump_(bump) {}
   virtual ~Material() = default;
   virtual const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const = 0;
+  // Whether some BSDF it makes may have a perfectly specular component (photon mapping builds
+  // no caustic map without one). Conservative: true may still give none.
+  virtual bool maybeSpecular() const { return false; }
   const Texture<Float>* bumpMap() const { return bump_; }
 
  protected:

@@ -11,6 +11,7 @@ class MirrorMaterial : public Material {
   explicit MirrorMaterial(const Texture<Spectrum>* kr, const Texture<Float>* bump = nullptr)
       : Material(bump), kr_(kr) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+  bool maybeSpecular() const override { return true; }
 
  private:
   const Texture<Spectrum>* kr_;

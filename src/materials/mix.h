@@ -14,6 +14,7 @@ class MixMaterial : public Material {
   MixMaterial(const Material* m1, const Material* m2, const Texture<Spectrum>* amount)
       : m1_(m1), m2_(m2), amount_(amount) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+  bool maybeSpecular() const override { return m1_->maybeSpecular() || m2_->maybeSpecular(); }
 
  private:
   const Material *m1_, *m2_;

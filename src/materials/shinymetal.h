@@ -13,6 +13,7 @@ class ShinyMetalMaterial : public Material {
                      const Texture<Float>* roughness, const Texture<Float>* bump = nullptr)
       : Material(bump), ks_(ks), kr_(kr), roughness_(roughness) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+  bool maybeSpecular() const override { return true; }
 
  private:
   const Texture<Spectrum>*ks_, *kr_;

@@ -29,4 +29,12 @@ const BSDF* UberMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& ar
   return bsdf;
 }
 
+bool UberMaterial::maybeSpecular() const {
+  const auto* kr = dynamic_cast<const ConstantTexture<Spectrum>*>(t_.kr);
+  const auto* opacity = dynamic_cast<const ConstantTexture<Spectrum>*>(t_.opacity);
+  bool noMirror = kr && clampSpectrum(kr->value()).isBlack();
+  bool opaque = opacity && clampSpectrum(opacity->value(), 0, 1) == Spectrum(1);
+  return !(noMirror && opaque);
+}
+
 }  // namespace candela

@@ -18,6 +18,9 @@ class UberMaterial : public Material {
   explicit UberMaterial(const Textures& t, const Texture<Float>* bump = nullptr)
       : Material(bump), t_(t) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
+  // Only a constant black Kr with a constant opacity of 1 (the defaults) rules the mirror and the
+  // pass-through out.
+  bool maybeSpecular() const override;
 
  private:
   Textures t_;

@@ -1,5 +1,7 @@
 // A static kd-tree over points in R^D answering k-nearest-neighbour queries, for looking up
-// irregularly sampled measured BRDFs (pbrt-v2's "measured" material keeps its samples in one).
+// irregularly sampled measured BRDFs (pbrt-v2's "measured" material keeps its samples in one) and
+// photons (pbrt 2e §15.6: the k nearest within a maximum distance, optionally only those a
+// predicate accepts).
 // The tree is implicit: each range of the index permutation stores its median at the middle, down
 // to small leaf ranges.
 #pragma once
@@ -30,15 +32,30 @@ class PointKdTree {
     points_ = std::move(sorted);
   }
   size_t size() const { return points_.size(); }
+  size_t memoryBytes() const {
+    return points_.capacity() * sizeof(Point) + order_.capacity() * sizeof(uint32_t) +
+           axis_.capacity() * sizeof(uint8_t);
+  }
 
   // The up to k nearest points to q: their indices (in construction order) and squared
   // distances, nearest first. Returns how many were found (min(k, size())).
   int nearest(const Point& q, int k, uint32_t* indices, Float* dist2) const {
-    int found = 0;
+    return nearestWithin(q, k, kInfinity, indices, dist2);
+  }
+  // The same among the points strictly closer than sqrt(maxDist2).
+  int nearestWithin(const Point& q, int k, Float maxDist2, uint32_t* indices, Float* dist2) const {
+    return nearestMatching(
+        q, k, maxDist2, [](uint32_t) { return true; }, indices, dist2);
+  }
+  // The same among the points whose construction index `accept` returns true for.
+  template <typename Accept>
+  int nearestMatching(const Point& q, int k, Float maxDist2, const Accept& accept,
+                      uint32_t* indices, Float* dist2) const {
+    Query<Accept> query{q, k, maxDist2, accept, indices, dist2, 0};
     Point off;
     off.fill(0);
-    if (k > 0) search(0, int(order_.size()), q, 0, off, k, indices, dist2, &found);
-    return found;
+    if (k > 0) search(0, int(order_.size()), query, 0, off);
+    return query.found;
   }
 
  private:
@@ -73,41 +90,54 @@ class PointKdTree {
     build(mid + 1, hi);
   }
 
+  template <typename Accept>
+  struct Query {
+    const Point& q;
+    int k;
+    Float maxDist2;
+    const Accept& accept;
+    uint32_t* indices;
+    Float* dist2;
+    int found;
+    // Squared distance a candidate must beat: the k-th best so far, else the search radius.
+    Float bound() const { return found == k ? std::min(dist2[k - 1], maxDist2) : maxDist2; }
+  };
+
   // Keeps the k best in ascending order of distance (k is small: insertion is enough).
-  static void insert(uint32_t index, Float d2, int k, uint32_t* indices, Float* dist2, int* found) {
-    if (*found == k && d2 >= dist2[k - 1]) return;
-    int i = *found < k ? (*found)++ : k - 1;
-    while (i > 0 && dist2[i - 1] > d2) {
-      dist2[i] = dist2[i - 1];
-      indices[i] = indices[i - 1];
+  template <typename Accept>
+  static void insert(uint32_t index, Float d2, Query<Accept>& qr) {
+    if (!(d2 < qr.bound()) || !qr.accept(index)) return;
+    int i = qr.found < qr.k ? qr.found++ : qr.k - 1;
+    while (i > 0 && qr.dist2[i - 1] > d2) {
+      qr.dist2[i] = qr.dist2[i - 1];
+      qr.indices[i] = qr.indices[i - 1];
       --i;
     }
-    dist2[i] = d2;
-    indices[i] = index;
+    qr.dist2[i] = d2;
+    qr.indices[i] = index;
   }
 
   // rd is the squared distance from q to the current range's cell, kept incrementally from the
   // per-axis offsets off (Arya and Mount 1993): a far cell is pruned by its box, not only by its
   // splitting plane, which matters in more than two or three dimensions.
-  void search(int lo, int hi, const Point& q, Float rd, Point& off, int k, uint32_t* indices,
-              Float* dist2, int* found) const {
+  template <typename Accept>
+  void search(int lo, int hi, Query<Accept>& qr, Float rd, Point& off) const {
     if (hi - lo <= kLeafSize) {
-      for (int i = lo; i < hi; ++i)
-        insert(order_[i], distance2(q, points_[i]), k, indices, dist2, found);
+      for (int i = lo; i < hi; ++i) insert(order_[i], distance2(qr.q, points_[i]), qr);
       return;
     }
     int mid = (lo + hi) / 2;
-    insert(order_[mid], distance2(q, points_[mid]), k, indices, dist2, found);
+    insert(order_[mid], distance2(qr.q, points_[mid]), qr);
     int axis = axis_[mid];
-    Float diff = q[axis] - points_[mid][axis];
+    Float diff = qr.q[axis] - points_[mid][axis];
     int nearLo = diff < 0 ? lo : mid + 1, nearHi = diff < 0 ? mid : hi;
     int farLo = diff < 0 ? mid + 1 : lo, farHi = diff < 0 ? hi : mid;
-    search(nearLo, nearHi, q, rd, off, k, indices, dist2, found);
+    search(nearLo, nearHi, qr, rd, off);
     Float old = off[axis];
     Float farRd = rd - old * old + diff * diff;
-    if (*found < k || farRd < dist2[k - 1]) {
+    if (farRd < qr.bound()) {
       off[axis] = diff;
-      search(farLo, farHi, q, farRd, off, k, indices, dist2, found);
+      search(farLo, farHi, qr, farRd, off);
       off[axis] = old;
     }
   }

@@ -5,6 +5,7 @@
 #include "integrators/irradiance/irradiance_cache_integrator.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
+#include "scene/photon_map_params.h"
 #include "scene/plugin_factories.h"
 
 namespace candela {
@@ -135,9 +136,12 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
   if (desc.name == "irradiancecache")
     return std::make_unique<IrradianceCacheIntegrator>(irradianceCacheParams(desc));
   if (desc.name == "igi") return createIgi(desc);
-  throwUnknownPlugin(
-      desc.loc, "surface integrator", desc.name,
-      {"ambientocclusion", "ao", "directlighting", "igi", "irradiancecache", "path", "whitted"});
+  // pbrt-v2 registers its photon mapper under both names; nothing differs.
+  if (desc.name == "photonmap" || desc.name == "exphotonmap")
+    return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
+  throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
+                     {"ambientocclusion", "ao", "directlighting", "exphotonmap", "igi",
+                      "irradiancecache", "path", "photonmap", "whitted"});
 }
 
 }  // namespace candela

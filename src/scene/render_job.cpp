@@ -257,7 +257,20 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   for (const auto& l : job.lights) lights.push_back(l.get());
   job.scene = std::make_unique<Scene>(job.aggregate.get(), std::move(lights));
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
-  job.integrator->preprocess(*job.scene);
+  PreprocessOptions pre;
+  pre.seed = options.seed;
+  pre.nThreads = options.nThreads;
+  pre.showProgress = options.showProgress;
+  pre.quick = options.quick;
+  pre.shutterOpen = job.camera->shutterOpen();
+  pre.shutterClose = job.camera->shutterClose();
+  pre.sceneHasSpecular = false;
+  for (const auto& m : job.materials) pre.sceneHasSpecular |= m->maybeSpecular();
+  if (options.warn)
+    pre.warn = [warn = options.warn, loc = integratorDesc.loc](const std::string& message) {
+      warn(loc, message);
+    };
+  job.integrator->preprocess(*job.scene, pre);
   return job;
 }
 

@@ -44,7 +44,9 @@ struct BuildOptions {
   // scene_linear RGB -> working-space RGB for every colour parameter (--colorspace); none =
   // identity.
   std::optional<std::array<Float, 9>> colorMatrix;
-  WarningSink warn;  // may be empty
+  WarningSink warn;           // may be empty
+  int nThreads = 0;           // for the integrator's preprocess (0: all cores)
+  bool showProgress = false;  // the preprocess's progress on standard error
   // Reads an image texture's file, converted to scene_linear from colorSpace ("" = the default
   // rule: sRGB for integer pixels, linear for float ones). Empty: image textures are an error.
   std::function<ImageBuffer(const std::string& path, const std::string& colorSpace)> loadImage;

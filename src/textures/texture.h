@@ -19,6 +19,7 @@ class ConstantTexture : public Texture<T> {
  public:
   explicit ConstantTexture(const T& value) : value_(value) {}
   T evaluate(const SurfaceInteraction&) const override { return value_; }
+  const T& value() const { return value_; }
 
  private:
   T value_;
