@@ -9,16 +9,23 @@
 
 namespace candela {
 
+class SplatBuffer;
+
 struct IntegratorContext {
   Sampler& sampler;
   MemoryArena& arena;
   RayStats& stats;
+  // Where an integrator that splats() adds light landing on other pixels; null otherwise.
+  SplatBuffer* splats = nullptr;
 };
 
 class SurfaceIntegrator {
  public:
   virtual ~SurfaceIntegrator() = default;
   virtual void preprocess(const Scene&) {}
+  // Whether Li also adds light to other pixels through ctx.splats (light tracing). The renderer
+  // then takes every pixel's samples, those outside the crop window too (see SamplerRenderer).
+  virtual bool splats() const { return false; }
   // *alpha is set to 1 when the ray hits a surface and 0 when it escapes.
   virtual Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
                       Float* alpha) const = 0;
