@@ -1,5 +1,6 @@
 // SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator.
 #include "integrators/ambient_occlusion.h"
+#include "integrators/bdpt.h"
 #include "integrators/direct_lighting.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
@@ -31,8 +32,41 @@ int maxDepthParam(const PluginDesc& desc, bool recursive) {
 
 }  // namespace
 
-std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc) {
+namespace {
+
+// pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and
+// pbrt-v3 "bdpt" (maxdepth, lightsampler; visualizestrategies and visualizeweights are not read,
+// so a scene that sets them is told they are unused).
+std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Camera* camera) {
   const ParamSet& p = desc.params;
+  int maxDepth = maxDepthParam(desc, false);
+  BdptIntegrator::LightChoice choice = BdptIntegrator::LightChoice::Power;
+  if (desc.name == "bdpt") {
+    std::string sampler = p.getOneString("lightsampler", "power");
+    if (sampler == "uniform")
+      choice = BdptIntegrator::LightChoice::Uniform;
+    else if (sampler != "power")
+      throw SceneError(p.locationOf("lightsampler", desc.loc),
+                       std::string("unknown lightsampler '")
+                           .append(sampler)
+                           .append("' (known: power, uniform)"));
+  }
+  const CameraImportance* importance = camera ? camera->importance() : nullptr;
+  if (!importance)
+    throw SceneError(desc.loc, std::string("surface integrator '")
+                                   .append(desc.name)
+                                   .append("' connects light paths to the camera, which the '")
+                                   .append(camera ? camera->kind() : "(none)")
+                                   .append("' camera does not support (use 'perspective')"));
+  return std::make_unique<BdptIntegrator>(*importance, maxDepth, choice);
+}
+
+}  // namespace
+
+std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
+                                                           const Camera* camera) {
+  const ParamSet& p = desc.params;
+  if (desc.name == "bidirectional" || desc.name == "bdpt") return createBdpt(desc, camera);
   if (desc.name == "directlighting") {
     int maxDepth = maxDepthParam(desc, true);
     std::string strategy = p.getOneString("strategy", "all");
@@ -59,8 +93,9 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
     bool cosSample = p.getOneBool("cossample", true);
     return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist, cosSample);
   }
-  throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
-                     {"ambientocclusion", "directlighting", "path", "whitted"});
+  throwUnknownPlugin(
+      desc.loc, "surface integrator", desc.name,
+      {"ambientocclusion", "bdpt", "bidirectional", "directlighting", "path", "whitted"});
 }
 
 }  // namespace candela

@@ -223,7 +223,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   PluginDesc integratorDesc = !desc.integrator.name.empty()
                                   ? desc.integrator
                                   : orDefault(desc.surfaceIntegrator, "directlighting");
-  job.integrator = createSurfaceIntegrator(integratorDesc);
+  job.integrator = createSurfaceIntegrator(integratorDesc, job.camera.get());
   reportUnused(integratorDesc, warn);
 
   // Geometry, materials and lights: only what the shapes use.
