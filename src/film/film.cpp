@@ -111,10 +111,7 @@ Spectrum Film::pixelValue(const Point2i& pixel) const {
     double inv = 1 / px.weightSum;
     L = Spectrum(Float(px.rgbSum[0] * inv), Float(px.rgbSum[1] * inv), Float(px.rgbSum[2] * inv));
   }
-  if (splats_ && lightPaths_ > 0) {
-    double scale = double(fullResolution_.x) * double(fullResolution_.y) / double(lightPaths_);
-    L += splats_->sum(pixel) * Float(scale);
-  }
+  if (splats_ && lightPaths_ > 0) L += splats_->sum(pixel) * Float(splatScale());
   return L;
 }
 

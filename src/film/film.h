@@ -43,6 +43,11 @@ class Film {
   SplatBuffer& enableSplats();
   SplatBuffer* splats() { return splats_.get(); }
   void addLightPaths(uint64_t n) { lightPaths_ += n; }
+  // What a splat sum is multiplied by: full-resolution pixels / light paths (0 before any).
+  double splatScale() const {
+    return lightPaths_ ? double(fullResolution_.x) * double(fullResolution_.y) / double(lightPaths_)
+                       : 0;
+  }
 
   // weight is the filter sample's weight; alpha 1 where a surface was hit.
   void addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);

@@ -2,8 +2,12 @@
 
 #include <numeric>
 
+#include <cstdio>
 #include "accel/primitive.h"
+
+#include "film/film.h"
 #include "film/splat_buffer.h"
+#include "filters/box_filter.h"
 #include "integrators/specular_differentials.h"
 #include "materials/material.h"
 
@@ -26,6 +30,45 @@ Float shadingCorrection(const Vector3f& wo, const Vector3f& wi, const Normal3f& 
 }
 
 }  // namespace
+
+BdptIntegrator::BdptIntegrator(const CameraImportance& camera, int maxDepth,
+                               LightChoice lightChoice, Visualize visualize,
+                               const Bounds2i& pixelBounds)
+    : camera_(camera), maxDepth_(maxDepth), lightChoice_(lightChoice), visualize_(visualize) {
+  if (visualize_ == Visualize::None) return;
+  pixelBox_ = std::make_unique<BoxFilter>(Vector2f(0.5f, 0.5f));
+  int n = strategyIndex(maxDepth_ + 1, 1) + 1;
+  for (int i = 0; i < n; ++i)
+    strategyImages_.push_back(std::make_unique<SplatBuffer>(pixelBounds, *pixelBox_));
+}
+
+BdptIntegrator::~BdptIntegrator() = default;
+
+std::vector<NamedImage> BdptIntegrator::extraImages(const Film& film) const {
+  std::vector<NamedImage> images;
+  Bounds2i b = film.pixelBounds();
+  int w = std::max(0, b.pMax.x - b.pMin.x), h = std::max(0, b.pMax.y - b.pMin.y);
+  Float scale = Float(film.splatScale());
+  for (int d = 0; d <= maxDepth_ && !strategyImages_.empty(); ++d)
+    for (int s = 0; s <= d + 1; ++s) {
+      int t = d + 2 - s;
+      ImageBuffer img(w, h, {"R", "G", "B"});
+      img.xOffset = b.pMin.x;
+      img.yOffset = b.pMin.y;
+      img.fullWidth = film.fullResolution().x;
+      img.fullHeight = film.fullResolution().y;
+      const SplatBuffer& buf = *strategyImages_[size_t(strategyIndex(s, t))];
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          Spectrum v = buf.sum(Point2i(b.pMin.x + x, b.pMin.y + y)) * scale;
+          for (int c = 0; c < 3; ++c) img.at(x, y, c) = v[c];
+        }
+      char name[64];
+      std::snprintf(name, sizeof name, "bdpt_d%02d_s%02d_t%02d.exr", d, s, t);
+      images.push_back({name, std::move(img)});
+    }
+  return images;
+}
 
 void BdptIntegrator::preprocess(const Scene& scene) {
   lights_ = scene.lights();
@@ -240,7 +283,9 @@ int BdptIntegrator::lightSubpath(const Scene& scene, IntegratorContext& ctx, Flo
 }
 
 Spectrum BdptIntegrator::connect(const Scene& scene, PathVertex* light, PathVertex* camera, int s,
-                                 int t, IntegratorContext& ctx, Point2f* pRaster) const {
+                                 int t, IntegratorContext& ctx, Point2f* pRaster,
+                                 Float* weight) const {
+  *weight = 0;
   PathVertex sampled;
   Spectrum L(0);
   // Only the camera path can end on the environment (s = 0).
@@ -302,7 +347,8 @@ Spectrum BdptIntegrator::connect(const Scene& scene, PathVertex* light, PathVert
       L = Spectrum(0);
   }
   if (L.isBlack()) return L;
-  return L * misWeight(light, camera, sampled, s, t);
+  *weight = misWeight(light, camera, sampled, s, t);
+  return L;
 }
 
 // Veach's thesis §10.2 with the power heuristic: the path x_0 (on a light) ... x_{n-1} (camera)
@@ -370,13 +416,22 @@ Spectrum BdptIntegrator::Li(const RayDifferential& ray, const Scene& scene, Inte
   int nLight = lightSubpath(scene, ctx, ray.time, lightPath.data());
   *alpha = (nCamera > 1 && !cameraPath[1].environment) ? 1 : 0;
   Spectrum L(0);
+  // Where this camera sample's own strategies (t >= 2) land, for the visualisation images.
+  Point2f pCamera(-1, -1);
+  if (visualize_ != Visualize::None) camera_.We(ray, &pCamera);
   for (int t = 1; t <= nCamera; ++t)
     for (int s = 0; s <= nLight; ++s) {
       int depth = t + s - 2;
       if (depth < 0 || depth > maxDepth_) continue;
       Point2f pRaster;
-      Spectrum c = connect(scene, lightPath.data(), cameraPath.data(), s, t, ctx, &pRaster);
+      Float weight = 0;
+      Spectrum unweighted =
+          connect(scene, lightPath.data(), cameraPath.data(), s, t, ctx, &pRaster, &weight);
+      Spectrum c = unweighted * weight;
       if (c.isBlack() || !c.isFinite()) continue;
+      if (visualize_ != Visualize::None)
+        strategyImages_[size_t(strategyIndex(s, t))]->add(
+            t == 1 ? pRaster : pCamera, visualize_ == Visualize::Weights ? c : unweighted);
       if (t == 1)
         ctx.splats->add(pRaster, c);
       else

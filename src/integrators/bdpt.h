@@ -13,6 +13,7 @@
 
 #include "cameras/camera.h"
 #include "core/sampling.h"
+#include "filters/filter.h"
 #include "integrators/bdpt_vertex.h"
 #include "integrators/integrator.h"
 
@@ -21,10 +22,16 @@ namespace candela {
 class BdptIntegrator : public SurfaceIntegrator {
  public:
   enum class LightChoice { Uniform, Power };
-  BdptIntegrator(const CameraImportance& camera, int maxDepth, LightChoice lightChoice)
-      : camera_(camera), maxDepth_(maxDepth), lightChoice_(lightChoice) {}
+  // pbrt-v3's visualizestrategies (each strategy's own estimate, unweighted) and visualizeweights
+  // (its MIS-weighted share): one image per (s, t), bdpt_dDD_sSS_tTT.exr.
+  enum class Visualize { None, Strategies, Weights };
+  // pixelBounds: the film's, for the visualisation images.
+  BdptIntegrator(const CameraImportance& camera, int maxDepth, LightChoice lightChoice,
+                 Visualize visualize = Visualize::None, const Bounds2i& pixelBounds = {});
+  ~BdptIntegrator() override;
   void preprocess(const Scene& scene) override;
   bool splats() const override { return true; }
+  std::vector<NamedImage> extraImages(const Film& film) const override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
 
@@ -39,7 +46,12 @@ class BdptIntegrator : public SurfaceIntegrator {
                  int maxVertices) const;
   // The (s, t) strategy's contribution, MIS weight included; for t = 1, *pRaster is where it lands.
   Spectrum connect(const Scene& scene, PathVertex* light, PathVertex* camera, int s, int t,
-                   IntegratorContext& ctx, Point2f* pRaster) const;
+                   IntegratorContext& ctx, Point2f* pRaster, Float* weight) const;
+  // The visualisation buffer of strategy (s, t): depth d = s + t - 2 has d + 2 strategies.
+  static int strategyIndex(int s, int t) {
+    int d = s + t - 2;
+    return d * (d + 3) / 2 + s;
+  }
   Float misWeight(const PathVertex* light, const PathVertex* camera, const PathVertex& sampled,
                   int s, int t) const;
 
@@ -69,6 +81,9 @@ class BdptIntegrator : public SurfaceIntegrator {
   std::unordered_map<const Light*, int> lightIndex_;
   Point3f sceneCenter_{0, 0, 0};
   Float sceneRadius_ = 0;
+  Visualize visualize_;
+  std::unique_ptr<Filter> pixelBox_;  // each visualised contribution lands in one pixel
+  std::vector<std::unique_ptr<SplatBuffer>> strategyImages_;
 };
 
 }  // namespace candela

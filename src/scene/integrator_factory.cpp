@@ -35,13 +35,18 @@ int maxDepthParam(const PluginDesc& desc, bool recursive) {
 namespace {
 
 // pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and
-// pbrt-v3 "bdpt" (maxdepth, lightsampler; visualizestrategies and visualizeweights are not read,
-// so a scene that sets them is told they are unused).
-std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Camera* camera) {
+// pbrt-v3 "bdpt" (maxdepth, lightsampler, visualizestrategies, visualizeweights).
+std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Camera* camera,
+                                              const Bounds2i& pixelBounds) {
   const ParamSet& p = desc.params;
   int maxDepth = maxDepthParam(desc, false);
   BdptIntegrator::LightChoice choice = BdptIntegrator::LightChoice::Power;
+  BdptIntegrator::Visualize visualize = BdptIntegrator::Visualize::None;
   if (desc.name == "bdpt") {
+    // pbrt-v3: the weighted images win when both are asked for.
+    if (p.getOneBool("visualizestrategies", false))
+      visualize = BdptIntegrator::Visualize::Strategies;
+    if (p.getOneBool("visualizeweights", false)) visualize = BdptIntegrator::Visualize::Weights;
     std::string sampler = p.getOneString("lightsampler", "power");
     if (sampler == "uniform")
       choice = BdptIntegrator::LightChoice::Uniform;
@@ -58,15 +63,17 @@ std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Came
                                    .append("' connects light paths to the camera, which the '")
                                    .append(camera ? camera->kind() : "(none)")
                                    .append("' camera does not support (use 'perspective')"));
-  return std::make_unique<BdptIntegrator>(*importance, maxDepth, choice);
+  return std::make_unique<BdptIntegrator>(*importance, maxDepth, choice, visualize, pixelBounds);
 }
 
 }  // namespace
 
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
-                                                           const Camera* camera) {
+                                                           const Camera* camera,
+                                                           const Bounds2i& pixelBounds) {
   const ParamSet& p = desc.params;
-  if (desc.name == "bidirectional" || desc.name == "bdpt") return createBdpt(desc, camera);
+  if (desc.name == "bidirectional" || desc.name == "bdpt")
+    return createBdpt(desc, camera, pixelBounds);
   if (desc.name == "directlighting") {
     int maxDepth = maxDepthParam(desc, true);
     std::string strategy = p.getOneString("strategy", "all");

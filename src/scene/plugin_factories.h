@@ -29,7 +29,9 @@ std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* 
 
 // camera: the scene's, for integrators that connect light paths to it ("bidirectional"/"bdpt");
 // such an integrator with a camera that has no importance is a SceneError naming the camera.
+// pixelBounds: the film's, for images an integrator makes besides it.
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
-                                                           const Camera* camera = nullptr);
+                                                           const Camera* camera = nullptr,
+                                                           const Bounds2i& pixelBounds = {});
 
 }  // namespace candela

@@ -223,7 +223,8 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   PluginDesc integratorDesc = !desc.integrator.name.empty()
                                   ? desc.integrator
                                   : orDefault(desc.surfaceIntegrator, "directlighting");
-  job.integrator = createSurfaceIntegrator(integratorDesc, job.camera.get());
+  job.integrator =
+      createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds());
   reportUnused(integratorDesc, warn);
 
   // Geometry, materials and lights: only what the shapes use.

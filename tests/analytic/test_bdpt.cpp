@@ -154,3 +154,47 @@ TEST(BdptAnalytic, CausticThroughAMirrorFromASpotLight) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// visualizeweights: the per-strategy images (each strategy's MIS-weighted share) add up to the
+// film's image; visualizestrategies: in the furnace every strategy alone estimates its depth's
+// term Le ρ^d = 0.5^(d+1), with the image mean within 3% (16 x 16, 64 spp).
+std::string furnaceWithVisualisation(const char* flag) {
+  return scene(std::string("Integrator \"bdpt\" \"integer maxdepth\" [2] \"bool ") + flag +
+                   "\" \"true\"\nPixelFilter \"box\"",
+               "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" [60]",
+               "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
+               "AreaLightSource \"diffuse\" \"rgb L\" [0.5 0.5 0.5]\n"
+               "ReverseOrientation\nShape \"sphere\" \"float radius\" [1]\n",
+               16, 64);
+}
+
+TEST(BdptVisualisation, WeightedStrategiesAddUpToTheImage) {
+  auto r = test::renderSceneText(furnaceWithVisualisation("visualizeweights"));
+  std::vector<NamedImage> images = r.job().integrator->extraImages(r.film());
+  ASSERT_EQ(images.size(), 2u + 3u + 4u);  // depths 0, 1, 2
+  EXPECT_EQ(images.front().name, "bdpt_d00_s00_t02.exr");
+  EXPECT_EQ(images.back().name, "bdpt_d02_s03_t01.exr");
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      double sum = 0;
+      for (const NamedImage& im : images) sum += im.image.at(x, y, 0);
+      EXPECT_NEAR(sum, r.film().pixelValue(Point2i(x, y))[0], 1e-5) << x << " " << y;
+    }
+}
+
+TEST(BdptVisualisation, EachStrategyAloneEstimatesItsDepth) {
+  auto r = test::renderSceneText(furnaceWithVisualisation("visualizestrategies"));
+  for (const NamedImage& im : r.job().integrator->extraImages(r.film())) {
+    int d = std::stoi(im.name.substr(6, 2));
+    double mean = 0;
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) mean += im.image.at(x, y, 1) / 256;
+    EXPECT_NEAR(mean, std::pow(0.5, d + 1), 0.03 * std::pow(0.5, d + 1)) << im.name;
+  }
+}
+
+}  // namespace
+}  // namespace candela
