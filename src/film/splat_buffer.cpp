@@ -23,10 +23,14 @@ void SplatBuffer::add(const Point2f& pRaster, const Spectrum& v) {
     refused_.fetch_add(1, std::memory_order_relaxed);
     return;
   }
-  // Pixel (x, y) has its centre at (x + 0.5, y + 0.5); the ones within the filter's radius.
+  // Pixel (x, y) has its centre c at (x + 0.5, y + 0.5); the ones with pRaster - c in [-r, r),
+  // half-open so that a splat on the border of a box filter's support counts once, in the pixel
+  // [x, x + 1) that holds it, as camera samples do.
   Vector2f r = filter_.radius();
-  int x0 = int(std::ceil(pRaster.x - 0.5f - r.x)), x1 = int(std::floor(pRaster.x - 0.5f + r.x));
-  int y0 = int(std::ceil(pRaster.y - 0.5f - r.y)), y1 = int(std::floor(pRaster.y - 0.5f + r.y));
+  int x0 = int(std::floor(pRaster.x - 0.5f - r.x)) + 1,
+      x1 = int(std::floor(pRaster.x - 0.5f + r.x));
+  int y0 = int(std::floor(pRaster.y - 0.5f - r.y)) + 1,
+      y1 = int(std::floor(pRaster.y - 0.5f + r.y));
   x0 = std::max(x0, bounds_.pMin.x), y0 = std::max(y0, bounds_.pMin.y);
   x1 = std::min(x1, bounds_.pMax.x - 1), y1 = std::min(y1, bounds_.pMax.y - 1);
   for (int y = y0; y <= y1; ++y)

@@ -114,6 +114,17 @@ TEST(SplatBuffer, FilmAddsSplatsScaledByPixelsOverLightPaths) {
   EXPECT_FLOAT_EQ(film.pixelValue(Point2i(0, 0))[0], 0);
 }
 
+// A box filter's support borders: a splat on a pixel border counts once, in the pixel that holds
+// it ([x, x + 1)).
+TEST(SplatBuffer, BoxBorderCountsOnce) {
+  BoxFilter box(Vector2f(0.5f, 0.5f));
+  SplatBuffer buf(Bounds2i(Point2i(0, 0), Point2i(3, 3)), box);
+  buf.add(Point2f(1, 2), Spectrum(1));
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 3; ++x)
+      EXPECT_EQ(buf.sum(Point2i(x, y))[0], (x == 1 && y == 2) ? 1.f : 0.f) << x << " " << y;
+}
+
 TEST(SplatBuffer, RefusesNonFinite) {
   BoxFilter box(Vector2f(0.5f, 0.5f));
   SplatBuffer buf(Bounds2i(Point2i(0, 0), Point2i(1, 1)), box);
