@@ -101,4 +101,19 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", previewPath.string().c_str());
 }
 
+void FrameWriter::writeBeside(const Film& film, int frameIndex,
+                              const std::vector<NamedImage>& images, ExrOptions exr) const {
+  fs::path exrPath = cli_.outfile.empty() ? fs::path(film.filename()) : fs::path(cli_.outfile);
+  fs::path dir = framePath(exrPath, frameIndex).parent_path();
+  exr.colorSpace = workingSpace_;
+  exr.chromaticities = colorManagement_->chromaticities(exr.colorSpace);
+  ImageMetadata meta;
+  meta.strings.push_back({"Software", std::string("candela ") + CANDELA_VERSION});
+  for (const NamedImage& named : images) {
+    fs::path path = dir / named.name;
+    writeExr(path.string(), named.image, meta, exr);
+    if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", path.string().c_str());
+  }
+}
+
 }  // namespace candela

@@ -8,6 +8,7 @@
 #include "app/cli_options.h"
 #include "film/film.h"
 #include "film/output/image_output.h"
+#include "integrators/integrator.h"
 #include "renderers/sampler_renderer.h"
 #include "scene/scene_description.h"
 
@@ -29,6 +30,10 @@ class FrameWriter {
   // extra: metadata of the caller's to add (stop conditions, error).
   void write(const Film& film, const SceneDescription& desc, int spp, const RenderResult& result,
              int frameIndex, const ImageMetadata& extra, ExrOptions exr) const;
+  // An integrator's extra images (bdpt's per-strategy ones), each as an EXR under its own name in
+  // the directory of the frame's EXR.
+  void writeBeside(const Film& film, int frameIndex, const std::vector<NamedImage>& images,
+                   ExrOptions exr) const;
 
  private:
   const CliOptions& cli_;

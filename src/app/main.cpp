@@ -121,6 +121,8 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   exr.compression = cli.compression.empty() ? job.exrCompression : cli.compression;
   exr.half = cli.half || job.exrHalf;
   writer.write(*job.film, desc, spp, result, frameIndex, extra, exr);
+  std::vector<NamedImage> images = job.integrator->extraImages(*job.film);
+  if (!images.empty()) writer.writeBeside(*job.film, frameIndex, images, exr);
 }
 
 }  // namespace

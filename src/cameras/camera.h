@@ -6,7 +6,9 @@
 #include <string>
 
 #include "core/animated_transform.h"
+#include "core/interaction.h"
 #include "core/paramset.h"
+#include "core/spectrum.h"
 #include "samplers/sampler.h"
 
 namespace candela {
@@ -22,6 +24,37 @@ class Camera {
   // The times the camera's rays span (prepasses such as photon shooting sample the same).
   virtual Float shutterOpen() const { return 0; }
   virtual Float shutterClose() const { return 0; }
+
+  // Camera importance (pbrt 3e §16.1.1), for integrators that connect light paths to the camera.
+  // A camera without it answers null and a caller that needs it reports the camera unsupported.
+  virtual const class CameraImportance* importance() const { return nullptr; }
+  // The name the scene gave the camera ("perspective"), for such messages.
+  virtual const char* kind() const = 0;
+};
+
+// What sampleWi returns: a point on the lens seen from a reference point.
+struct CameraWiSample {
+  Spectrum We;        // importance along the ray from the lens point toward ref
+  Vector3f wi;        // unit, from ref toward the lens point
+  Float pdf = 0;      // solid-angle density at ref
+  Point2f pRaster;    // where the ray lands on the film
+  Interaction pLens;  // the lens point (its normal is the viewing axis), for the shadow ray
+};
+
+class CameraImportance {
+ public:
+  virtual ~CameraImportance() = default;
+  // Importance of a ray leaving the lens (its origin may be anywhere on the camera ray) and the
+  // raster position it maps to; 0 outside the film.
+  virtual Spectrum We(const Ray& ray, Point2f* pRaster) const = 0;
+  // Densities of generating the ray: per area of the lens and per solid angle (0 off the film).
+  virtual void pdfWe(const Ray& ray, Float* pdfPos, Float* pdfDir) const = 0;
+  // A lens point as seen from ref; pdf is 0 when none can see it.
+  virtual CameraWiSample sampleWi(const Interaction& ref, const Point2f& u) const = 0;
+  // The lens point a camera ray left from (rays start at the near plane).
+  virtual Point3f lensPoint(const Ray& ray) const = 0;
+  // The viewing axis (the lens normal) at a time.
+  virtual Vector3f axis(Float time) const = 0;
 };
 
 // The camera named by a Camera statement ("perspective", "orthographic" or "environment"), with

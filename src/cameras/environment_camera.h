@@ -23,6 +23,7 @@ struct EnvironmentCameraOptions {
 
 class EnvironmentCamera final : public Camera {
  public:
+  const char* kind() const override { return "environment"; }
   EnvironmentCamera(const AnimatedTransform& cameraToWorld,
                     const EnvironmentCameraOptions& options);
   Float generateRay(const CameraSample& sample, Ray* ray) const override;

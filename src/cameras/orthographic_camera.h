@@ -11,6 +11,7 @@ namespace candela {
 
 class OrthographicCamera final : public ProjectiveCamera {
  public:
+  const char* kind() const override { return "orthographic"; }
   OrthographicCamera(const AnimatedTransform& cameraToWorld,
                      const ProjectiveCameraOptions& options);
 };

@@ -14,6 +14,7 @@ ProjectiveCamera::ProjectiveCamera(const AnimatedTransform& cameraToWorld,
                                    const ProjectiveCameraOptions& options, Float originScale,
                                    Float directionScale)
     : cameraToWorld_(cameraToWorld), options_(options) {
+  if (!cameraToWorld_.isAnimated()) worldToCameraStill_ = inverse(cameraToWorld_.interpolate(0));
   // Screen to raster flips y so that raster y grows downwards (lrt draft §6.1). The composition
   // raster -> screen -> pinhole ray is affine, so it is computed directly rather than through
   // the 4x4 projective matrix, which loses precision for a far yon.
@@ -26,6 +27,12 @@ ProjectiveCamera::ProjectiveCamera(const AnimatedTransform& cameraToWorld,
   d0_ = Vector3f(sw.pMin.x * directionScale, sw.pMax.y * directionScale, 1);
   dDx_ = Vector3f(dxScreen * directionScale, 0, 0);
   dDy_ = Vector3f(0, -dyScreen * directionScale, 0);
+}
+
+void ProjectiveCamera::transformsAt(Float time, Transform* cameraToWorld,
+                                    Transform* worldToCamera) const {
+  *cameraToWorld = cameraToWorld_.interpolate(time);
+  *worldToCamera = cameraToWorld_.isAnimated() ? inverse(*cameraToWorld) : worldToCameraStill_;
 }
 
 Point2f ProjectiveCamera::rasterToScreen(const Point2f& pRaster) const {

@@ -45,6 +45,18 @@ class ProjectiveCamera : public Camera {
  protected:
   ProjectiveCamera(const AnimatedTransform& cameraToWorld, const ProjectiveCameraOptions& options,
                    Float originScale, Float directionScale);
+  // The inverse of pinholeRay's direction map: the raster position of a pinhole ray direction
+  // with d.z = 1.
+  Point2f rasterOfPinholeDirection(const Vector3f& d) const {
+    return Point2f((d.x - d0_.x) / dDx_.x, (d.y - d0_.y) / dDy_.y);
+  }
+  // The area the film covers on the plane z = 1 (pinhole directions with d.z = 1).
+  Float pinholeFilmArea() const {
+    return std::abs(dDx_.x * Float(options_.fullResolution.x)) *
+           std::abs(dDy_.y * Float(options_.fullResolution.y));
+  }
+  // cameraToWorld and its inverse at a time (cached when the camera stands still).
+  void transformsAt(Float time, Transform* cameraToWorld, Transform* worldToCamera) const;
 
  private:
   // The camera-space pinhole ray's origin and direction (d.z = 1) for a raster position.
@@ -64,6 +76,7 @@ class ProjectiveCamera : public Camera {
                                         const Transform& cameraToWorld) const;
 
   AnimatedTransform cameraToWorld_;
+  Transform worldToCameraStill_;  // inverse of cameraToWorld_ when it does not move
   ProjectiveCameraOptions options_;
   // Raster -> pinhole ray is affine: o = o0 + x oDx + y oDy, d = d0 + x dDx + y dDy.
   Point3f o0_;

@@ -106,9 +106,18 @@ Spectrum Film::pixelValue(const Point2i& pixel) const {
   const Pixel& px = at(pixel);
   // The weighted mean, Σ w L / Σ w (lrt draft §8.1; pbrt 4e §5.4.3): with weights f/pdf from the
   // filter's importance sampling, a constant L comes out exactly constant for any filter.
-  if (px.weightSum == 0) return Spectrum(0);
-  double inv = 1 / px.weightSum;
-  return Spectrum(Float(px.rgbSum[0] * inv), Float(px.rgbSum[1] * inv), Float(px.rgbSum[2] * inv));
+  Spectrum L(0);
+  if (px.weightSum != 0) {
+    double inv = 1 / px.weightSum;
+    L = Spectrum(Float(px.rgbSum[0] * inv), Float(px.rgbSum[1] * inv), Float(px.rgbSum[2] * inv));
+  }
+  if (splats_ && lightPaths_ > 0) L += splats_->sum(pixel) * Float(splatScale());
+  return L;
+}
+
+SplatBuffer& Film::enableSplats() {
+  if (!splats_) splats_ = std::make_unique<SplatBuffer>(pixelBounds_, *filter_);
+  return *splats_;
 }
 
 Float Film::pixelAlpha(const Point2i& pixel) const {

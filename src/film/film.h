@@ -11,6 +11,7 @@
 #include "core/spectrum.h"
 #include "film/aov.h"
 #include "film/image_buffer.h"
+#include "film/splat_buffer.h"
 #include "filters/filter.h"
 
 namespace candela {
@@ -36,9 +37,21 @@ class Film {
   // The first-hit AOVs of one sample (only when kAovGeometric bits are enabled).
   void addAovSample(const Point2i& pixel, const AovSample& s, Float weight);
 
+  // Light splatted from other pixels' samples (see SplatBuffer): allocated on first call. Each
+  // pixel's value gains the splats' sum times fullResolution's pixel count over the number of
+  // light paths the renderer reported with addLightPaths.
+  SplatBuffer& enableSplats();
+  SplatBuffer* splats() { return splats_.get(); }
+  void addLightPaths(uint64_t n) { lightPaths_ += n; }
+  // What a splat sum is multiplied by: full-resolution pixels / light paths (0 before any).
+  double splatScale() const {
+    return lightPaths_ ? double(fullResolution_.x) * double(fullResolution_.y) / double(lightPaths_)
+                       : 0;
+  }
+
   // weight is the filter sample's weight; alpha 1 where a surface was hit.
   void addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);
-  // Weighted mean radiance of a pixel (black if it has no samples).
+  // Weighted mean radiance of a pixel (black if it has no samples), plus its splats.
   Spectrum pixelValue(const Point2i& pixel) const;
   Float pixelAlpha(const Point2i& pixel) const;
   // Estimated variance of pixelValue (the variance of the weighted mean, from the samples' spread),
@@ -80,6 +93,8 @@ class Film {
   };
   unsigned aovFlags_ = 0;
   std::vector<AovPixel> aovPixels_;
+  std::unique_ptr<SplatBuffer> splats_;
+  uint64_t lightPaths_ = 0;
 };
 
 // The film named by a Film statement ("image"), with pbrt-v2's parameters: xresolution 640,

@@ -1,6 +1,8 @@
 // Pixel reconstruction filters (lrt draft §7.7). Samples are placed by importance sampling the
 // filter (pbrt 4e §8.8) rather than splatted to neighbouring pixels, so each pixel depends only on
 // its own samples: the image is the same bits for any tile size, thread count or crop window.
+// (Light splatted from other pixels' samples, as bdpt's t = 1 strategy makes, goes to a separate
+// SplatBuffer that weights it by f / ∫f.)
 #pragma once
 
 #include <memory>

@@ -5,8 +5,10 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/memory.h"
+#include "film/image_buffer.h"
 #include "samplers/sampler.h"
 #include "scene/scene.h"
 
@@ -23,10 +25,21 @@ struct PrepassOptions {
   std::function<void()> setUpThread;
 };
 
+class SplatBuffer;
+
+// An image an integrator makes besides the film's (bdpt's per-strategy images), written next to
+// the output under its name.
+struct NamedImage {
+  std::string name;
+  ImageBuffer image;
+};
+
 struct IntegratorContext {
   Sampler& sampler;
   MemoryArena& arena;
   RayStats& stats;
+  // Where an integrator that splats() adds light landing on other pixels; null otherwise.
+  SplatBuffer* splats = nullptr;
 };
 
 // What preprocess may use from the build besides the scene.
@@ -56,6 +69,12 @@ class SurfaceIntegrator {
   }
   // Lines for --stats about what prepare built; empty when there is nothing to say.
   virtual std::string statsReport() const { return {}; }
+  // Whether Li also adds light to other pixels through ctx.splats (light tracing). The renderer
+  // then takes every pixel's samples, those outside the crop window too (see SamplerRenderer).
+  virtual bool splats() const { return false; }
+  // Images to write besides the film's once rendering is done (film: the render's, for its pixel
+  // bounds and scale).
+  virtual std::vector<NamedImage> extraImages(const Film& /*film*/) const { return {}; }
   // *alpha is set to 1 when the ray hits a surface and 0 when it escapes.
   virtual Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
                       Float* alpha) const = 0;

@@ -21,6 +21,7 @@ class DistantLight : public Light {
   // What crosses the scene's bounding disk: L π R² (R from preprocess).
   Spectrum power() const override { return radiance_ * (kPi * sceneRadius_ * sceneRadius_); }
   bool isDelta() const override { return true; }
+  bool atInfinity() const override { return true; }
   void preprocess(const Bounds3f& sceneBounds) override;
   const Vector3f& direction() const { return wLight_; }
 

@@ -39,6 +39,7 @@ class InfiniteAreaLight : public Light {
   // What crosses the scene's bounding disk from all directions: π R² ∫ L dω.
   Spectrum power() const override;
   bool isDelta() const override { return false; }
+  bool atInfinity() const override { return true; }
   Spectrum Le(const RayDifferential& ray) const override { return radiance(ray.d); }
   void preprocess(const Bounds3f& sceneBounds) override;
   // The radiance arriving from world direction w (w toward the sky).

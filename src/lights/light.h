@@ -37,6 +37,8 @@ class Light {
                      Float* pdfDir) const = 0;
   virtual Spectrum power() const = 0;
   virtual bool isDelta() const = 0;
+  // Distant and infinite lights: no position, light arriving from directions at infinity.
+  virtual bool atInfinity() const { return false; }
   // Radiance along a ray that escapes the scene (infinite lights).
   virtual Spectrum Le(const RayDifferential&) const { return Spectrum(0); }
   virtual void preprocess(const Bounds3f& /*sceneBounds*/) {}

@@ -26,7 +26,15 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   auto start = std::chrono::steady_clock::now();
   RayStats prepassRays = integrator_.prepare(scene, camera_, sampler_, film,
                                              {options.nThreads, options.quiet, enableFlushToZero});
-  const Bounds2i bounds = film.pixelBounds();
+  // An integrator that splats adds light to pixels other than the sample's own: a light subpath
+  // belongs to a camera sample (pixel, sample index) and may land anywhere on the film. So with a
+  // crop window every pixel of the full image still takes its samples, as in the uncropped render
+  // (the film keeps only what lands in the crop); a cropped image is then the same bits as that
+  // region of the full one, at the cost of the full render's work.
+  const bool splatting = integrator_.splats();
+  SplatBuffer* splats = splatting ? &film.enableSplats() : nullptr;
+  const Bounds2i bounds =
+      splatting ? Bounds2i(Point2i(0, 0), film.fullResolution()) : film.pixelBounds();
   const int tile = std::max(1, options.tileSize);
   const int nx = (bounds.pMax.x - bounds.pMin.x + tile - 1) / tile;
   const int ny = (bounds.pMax.y - bounds.pMin.y + tile - 1) / tile;
@@ -49,7 +57,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     TileCounters& c = counters.local();
     std::unique_ptr<Sampler> sampler = sampler_.clone();
     MemoryArena arena;
-    IntegratorContext ctx{*sampler, arena, c.rays};
+    IntegratorContext ctx{*sampler, arena, c.rays, splats};
     int tx = tileIndex % nx, ty = tileIndex / nx;
     int x0 = bounds.pMin.x + tx * tile, y0 = bounds.pMin.y + ty * tile;
     int x1 = std::min(x0 + tile, bounds.pMax.x), y1 = std::min(y0 + tile, bounds.pMax.y);
@@ -114,6 +122,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     result.samples += c.samples;
     result.nonFiniteSamples += c.nonFinite;
   }
+  if (splatting) film.addLightPaths(result.samples);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -1,6 +1,7 @@
 // The sampler renderer (lrt draft §1.3, pbrt 2e §1.3.4): image tiles rendered in parallel under
 // oneTBB, each with its own sampler clone, memory arena and counters. A pixel's value depends only
-// on (scene, pixel, samples per pixel, seed), never on tiling or threads.
+// on (scene, pixel, samples per pixel, seed), never on tiling or threads; with an integrator that
+// splats (bdpt) also on the other pixels' samples, added order-independently (SplatBuffer).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 // SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator.
 #include "integrators/ambient_occlusion.h"
+#include "integrators/bdpt.h"
 #include "integrators/direct_lighting.h"
 #include "integrators/instant_global_illumination.h"
 #include "integrators/irradiance/irradiance_cache_integrator.h"
@@ -97,8 +98,48 @@ std::unique_ptr<SurfaceIntegrator> createIgi(const PluginDesc& desc) {
 
 }  // namespace
 
-std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc) {
+namespace {
+
+// pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and
+// pbrt-v3 "bdpt" (maxdepth, lightsampler, visualizestrategies, visualizeweights).
+std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Camera* camera,
+                                              const Bounds2i& pixelBounds) {
   const ParamSet& p = desc.params;
+  int maxDepth = maxDepthParam(desc, false);
+  BdptIntegrator::LightChoice choice = BdptIntegrator::LightChoice::Power;
+  BdptIntegrator::Visualize visualize = BdptIntegrator::Visualize::None;
+  if (desc.name == "bdpt") {
+    // pbrt-v3: the weighted images win when both are asked for.
+    if (p.getOneBool("visualizestrategies", false))
+      visualize = BdptIntegrator::Visualize::Strategies;
+    if (p.getOneBool("visualizeweights", false)) visualize = BdptIntegrator::Visualize::Weights;
+    std::string sampler = p.getOneString("lightsampler", "power");
+    if (sampler == "uniform")
+      choice = BdptIntegrator::LightChoice::Uniform;
+    else if (sampler != "power")
+      throw SceneError(p.locationOf("lightsampler", desc.loc),
+                       std::string("unknown lightsampler '")
+                           .append(sampler)
+                           .append("' (known: power, uniform)"));
+  }
+  const CameraImportance* importance = camera ? camera->importance() : nullptr;
+  if (!importance)
+    throw SceneError(desc.loc, std::string("surface integrator '")
+                                   .append(desc.name)
+                                   .append("' connects light paths to the camera, which the '")
+                                   .append(camera ? camera->kind() : "(none)")
+                                   .append("' camera does not support (use 'perspective')"));
+  return std::make_unique<BdptIntegrator>(*importance, maxDepth, choice, visualize, pixelBounds);
+}
+
+}  // namespace
+
+std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
+                                                           const Camera* camera,
+                                                           const Bounds2i& pixelBounds) {
+  const ParamSet& p = desc.params;
+  if (desc.name == "bidirectional" || desc.name == "bdpt")
+    return createBdpt(desc, camera, pixelBounds);
   if (desc.name == "directlighting") {
     int maxDepth = maxDepthParam(desc, true);
     std::string strategy = p.getOneString("strategy", "all");
@@ -140,8 +181,8 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
   if (desc.name == "photonmap" || desc.name == "exphotonmap")
     return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
   throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
-                     {"ambientocclusion", "ao", "directlighting", "exphotonmap", "igi",
-                      "irradiancecache", "path", "photonmap", "whitted"});
+                     {"ambientocclusion", "ao", "bdpt", "bidirectional", "directlighting",
+                      "exphotonmap", "igi", "irradiancecache", "path", "photonmap", "whitted"});
 }
 
 }  // namespace candela

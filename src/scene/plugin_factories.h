@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cameras/camera.h"
 #include "integrators/integrator.h"
 #include "lights/light.h"
 #include "materials/material.h"
@@ -26,6 +27,11 @@ std::unique_ptr<Light> createLight(const LightDesc& desc,
                                    const TextureFactory::ImageLoader& loadImage = {});
 std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* shape);
 
-std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc);
+// camera: the scene's, for integrators that connect light paths to it ("bidirectional"/"bdpt");
+// such an integrator with a camera that has no importance is a SceneError naming the camera.
+// pixelBounds: the film's, for images an integrator makes besides it.
+std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
+                                                           const Camera* camera = nullptr,
+                                                           const Bounds2i& pixelBounds = {});
 
 }  // namespace candela

@@ -231,7 +231,8 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
       integratorDesc.params =
           withInt(integratorDesc.params, "nlights", std::max(1, nLights / 4), integratorDesc.loc);
   }
-  job.integrator = createSurfaceIntegrator(integratorDesc);
+  job.integrator =
+      createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds());
   reportUnused(integratorDesc, warn);
 
   // Geometry, materials and lights: only what the shapes use.

@@ -1,0 +1,89 @@
+// "bidirectional" (pbrt-v2/lrt) and "bdpt" (pbrt-v3): bidirectional path tracing (Veach's thesis
+// ch. 10; pbrt 3e §16.3). Each camera sample traces a camera subpath and a light subpath and
+// connects every prefix pair (s light vertices, t camera vertices): s = 0 is the camera path
+// hitting an emitter, s = 1 a fresh light sample (next-event estimation), t = 1 a light-path
+// vertex connected to a fresh lens point and splatted to the film where it lands. Every
+// strategy's contribution is weighted by the power heuristic over all strategies that could have
+// made the same path. maxdepth bounds the path's scattering events (s + t - 2).
+#pragma once
+
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "cameras/camera.h"
+#include "core/sampling.h"
+#include "filters/filter.h"
+#include "integrators/bdpt_vertex.h"
+#include "integrators/integrator.h"
+
+namespace candela {
+
+class BdptIntegrator : public SurfaceIntegrator {
+ public:
+  enum class LightChoice { Uniform, Power };
+  // pbrt-v3's visualizestrategies (each strategy's own estimate, unweighted) and visualizeweights
+  // (its MIS-weighted share): one image per (s, t), bdpt_dDD_sSS_tTT.exr.
+  enum class Visualize { None, Strategies, Weights };
+  // pixelBounds: the film's, for the visualisation images.
+  BdptIntegrator(const CameraImportance& camera, int maxDepth, LightChoice lightChoice,
+                 Visualize visualize = Visualize::None, const Bounds2i& pixelBounds = {});
+  ~BdptIntegrator() override;
+  void preprocess(const Scene& scene, const PreprocessOptions&) override;
+  bool splats() const override { return true; }
+  std::vector<NamedImage> extraImages(const Film& film) const override;
+  Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
+              Float* alpha) const override;
+
+ private:
+  // Subpaths: vertex 0 is the camera (light), then the surfaces the walk scattered at. Return the
+  // number of vertices.
+  int cameraSubpath(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
+                    PathVertex* path) const;
+  int lightSubpath(const Scene& scene, IntegratorContext& ctx, Float time, PathVertex* path) const;
+  int randomWalk(RayDifferential ray, Spectrum beta, Float pdfDir, bool fromCamera,
+                 const Scene& scene, IntegratorContext& ctx, PathVertex* path,
+                 int maxVertices) const;
+  // The (s, t) strategy's contribution, MIS weight included; for t = 1, *pRaster is where it lands.
+  Spectrum connect(const Scene& scene, PathVertex* light, PathVertex* camera, int s, int t,
+                   IntegratorContext& ctx, Point2f* pRaster, Float* weight) const;
+  // The visualisation buffer of strategy (s, t): depth d = s + t - 2 has d + 2 strategies.
+  static int strategyIndex(int s, int t) {
+    int d = s + t - 2;
+    return d * (d + 3) / 2 + s;
+  }
+  Float misWeight(const PathVertex* light, const PathVertex* camera, const PathVertex& sampled,
+                  int s, int t) const;
+
+  // f at v from the direction of `prev` toward `next`; light-side vertices (importance transport)
+  // get the shading-normal correction (pbrt 3e §16.1.3).
+  Spectrum f(const PathVertex& v, const PathVertex& prev, const PathVertex& next,
+             bool importance) const;
+  // Area density at `next` of the walk continuing from v, which it reached from `prev` (prev may
+  // be null at subpath starts).
+  Float pdf(const PathVertex& v, const PathVertex* prev, const PathVertex& next) const;
+  // Area density at `next` of a light path starting at light vertex v toward it.
+  Float pdfLight(const PathVertex& v, const PathVertex& next) const;
+  // Density of choosing light vertex v as a light path's origin (area, or solid angle from `next`
+  // for points at infinity).
+  Float pdfLightOrigin(const PathVertex& v, const PathVertex& next) const;
+  // Emitted radiance at v toward `toward` (v an emitter or an environment vertex).
+  Spectrum Le(const PathVertex& v, const PathVertex& toward) const;
+  Float lightPdf(const Light* light) const;
+  // The direction density of all infinite lights together, toward w (toward the sky).
+  Float infiniteLightDensity(const Vector3f& w) const;
+
+  const CameraImportance& camera_;
+  int maxDepth_;
+  LightChoice lightChoice_;
+  std::vector<const Light*> lights_;
+  std::unique_ptr<Distribution1D> lightDistribution_;
+  std::unordered_map<const Light*, int> lightIndex_;
+  Point3f sceneCenter_{0, 0, 0};
+  Float sceneRadius_ = 0;
+  Visualize visualize_;
+  std::unique_ptr<Filter> pixelBox_;  // each visualised contribution lands in one pixel
+  std::vector<std::unique_ptr<SplatBuffer>> strategyImages_;
+};
+
+}  // namespace candela
