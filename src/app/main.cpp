@@ -28,9 +28,8 @@ void printWarning(const FileLoc& loc, const std::string& message) {
 
 // Doubling passes with the error after each (against --reference, or estimated from the image's
 // own variance), the stop conditions, and what the EXR metadata should say about them.
-ProgressiveResult renderProgressively(const SamplerRenderer& renderer, RenderJob& job,
-                                      const CliOptions& cli, const RenderOptions& options,
-                                      ImageMetadata* metadata) {
+ProgressiveResult renderProgressively(RenderJob& job, const CliOptions& cli,
+                                      const RenderOptions& options, ImageMetadata* metadata) {
   std::optional<ImageBuffer> reference;
   if (!cli.reference.empty()) reference = readImage(cli.reference);
   std::unique_ptr<ErrorLog> log;
@@ -52,8 +51,7 @@ ProgressiveResult renderProgressively(const SamplerRenderer& renderer, RenderJob
                    reference ? "" : " estimated from variance");
     return !(cli.targetError > 0 && last.relmse <= cli.targetError);
   };
-  ProgressiveResult pr =
-      renderProgressive(renderer, *job.scene, *job.film, job.sampler->samplesPerPixel(), po);
+  ProgressiveResult pr = renderJob(job, po);
   metadata->strings.push_back({"candela:stopReason", stopReasonName(pr.reason)});
   metadata->ints.push_back({"candela:passes", pr.passes});
   if (cli.timeBudget > 0) metadata->floats.push_back({"candela:timeBudget", float(cli.timeBudget)});
@@ -90,19 +88,23 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   options.nThreads = cli.nThreads;
   options.tileSize = cli.tileSize;
   options.quiet = cli.quiet;
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
-  RenderResult result;
-  int spp = job.sampler->samplesPerPixel();
   ImageMetadata extra;
+  ProgressiveResult pr;
   if (cli.progressive()) {
-    ProgressiveResult pr = renderProgressively(renderer, job, cli, options, &extra);
-    result = pr.total;
-    spp = pr.spp;
+    pr = renderProgressively(job, cli, options, &extra);
   } else {
-    result = renderer.render(*job.scene, *job.film, options);
+    ProgressiveOptions po;
+    po.render = options;
+    pr = renderJob(job, po);
   }
-  // What the integrator built while rendering (the irradiance cache's samples and memory).
-  if (cli.stats) std::fprintf(stderr, "%s", job.integrator->statsReport().c_str());
+  const RenderResult& result = pr.total;
+  const int spp = pr.spp;
+  // What the integrator or renderer built (photon maps; the irradiance cache, while rendering).
+  if (cli.stats)
+    std::fprintf(
+        stderr, "%s",
+        (job.imageRenderer ? job.imageRenderer->statsReport() : job.integrator->statsReport())
+            .c_str());
   if (!cli.quiet) {
     uint64_t rays = result.rays.intersectionRays + result.rays.shadowRays;
     std::fprintf(stderr,
@@ -121,8 +123,10 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   exr.compression = cli.compression.empty() ? job.exrCompression : cli.compression;
   exr.half = cli.half || job.exrHalf;
   writer.write(*job.film, desc, spp, result, frameIndex, extra, exr);
-  std::vector<NamedImage> images = job.integrator->extraImages(*job.film);
-  if (!images.empty()) writer.writeBeside(*job.film, frameIndex, images, exr);
+  if (job.integrator) {
+    std::vector<NamedImage> images = job.integrator->extraImages(*job.film);
+    if (!images.empty()) writer.writeBeside(*job.film, frameIndex, images, exr);
+  }
 }
 
 }  // namespace

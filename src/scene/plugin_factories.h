@@ -10,6 +10,8 @@
 #include "integrators/integrator.h"
 #include "lights/light.h"
 #include "materials/material.h"
+#include "renderers/image_renderer.h"
+#include "samplers/sampler.h"
 #include "scene/scene_description.h"
 #include "scene/texture_factory.h"
 
@@ -33,5 +35,23 @@ std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* 
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
                                                            const Camera* camera = nullptr,
                                                            const Bounds2i& pixelBounds = {});
+
+// What a whole-image renderer may take from the build.
+struct ImageRendererContext {
+  const Camera* camera = nullptr;
+  const Sampler* sampler = nullptr;  // its samples per pixel (after --spp and --quick)
+  uint64_t seed = 0;
+  bool quick = false;
+  Bounds2i pixelBounds;                                          // the film's (crop window applied)
+  std::function<void(const FileLoc&, const std::string&)> warn;  // may be empty
+};
+
+// The whole-image renderer that an Integrator statement (pbrt-v3: "sppm", "mlt") or a Renderer
+// statement (pbrt-v2: "metropolis") selects; null when the scene renders with the sampler
+// renderer and a surface integrator. renderer.name is empty when the scene has no Renderer
+// statement. Bad parameters are SceneErrors at their location.
+std::unique_ptr<ImageRenderer> createImageRenderer(const PluginDesc& integrator,
+                                                   const PluginDesc& renderer,
+                                                   const ImageRendererContext& context);
 
 }  // namespace candela

@@ -175,9 +175,6 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
 
   if (!desc.volumes.empty())
     throw SceneError(desc.volumes.front().loc, "volume regions are not supported yet");
-  if (!desc.renderer.name.empty() && desc.renderer.name != "sampler" && warn)
-    warn(desc.renderer.loc, "renderer '" + desc.renderer.name +
-                                "' is not available; using the sampler renderer (as pbrt does)");
 
   // Film and camera.
   PluginDesc filmDesc = orDefault(desc.film, "image");
@@ -231,8 +228,18 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
       integratorDesc.params =
           withInt(integratorDesc.params, "nlights", std::max(1, nLights / 4), integratorDesc.loc);
   }
-  job.integrator =
-      createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds());
+  ImageRendererContext irc{job.camera.get(), job.sampler.get(),       options.seed,
+                           options.quick,    job.film->pixelBounds(), warn};
+  job.imageRenderer = createImageRenderer(integratorDesc, desc.renderer, irc);
+  if (job.imageRenderer) {
+    reportUnused(desc.renderer, warn);
+  } else {
+    if (!desc.renderer.name.empty() && desc.renderer.name != "sampler" && warn)
+      warn(desc.renderer.loc,
+           "renderer '" + desc.renderer.name + "' is not available; using the sampler renderer");
+    job.integrator =
+        createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds());
+  }
   reportUnused(integratorDesc, warn);
 
   // Geometry, materials and lights: only what the shapes use.
@@ -271,8 +278,22 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
     pre.warn = [warn = options.warn, loc = integratorDesc.loc](const std::string& message) {
       warn(loc, message);
     };
-  job.integrator->preprocess(*job.scene, pre);
+  if (job.integrator) job.integrator->preprocess(*job.scene, pre);
   return job;
+}
+
+ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options) {
+  if (job.imageRenderer)
+    return job.imageRenderer->render(*job.scene, *job.camera, *job.film, options);
+  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  if (options.afterPass || options.timeBudget > 0)
+    return renderProgressive(renderer, *job.scene, *job.film, job.sampler->samplesPerPixel(),
+                             options);
+  ProgressiveResult result;
+  result.total = renderer.render(*job.scene, *job.film, options.render);
+  result.spp = job.sampler->samplesPerPixel();
+  result.passes = 1;
+  return result;
 }
 
 }  // namespace candela

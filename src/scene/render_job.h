@@ -18,6 +18,7 @@
 #include "integrators/integrator.h"
 #include "lights/light.h"
 #include "materials/material.h"
+#include "renderers/image_renderer.h"
 #include "samplers/sampler.h"
 #include "scene/scene.h"
 #include "scene/scene_description.h"
@@ -85,9 +86,16 @@ struct RenderJob {
   bool exrHalf = false;
   std::unique_ptr<Camera> camera;
   std::unique_ptr<Sampler> sampler;
+  // Exactly one of these is set: the surface integrator the sampler renderer runs, or a renderer
+  // of the whole image (Metropolis, SPPM) that replaces both.
   std::unique_ptr<SurfaceIntegrator> integrator;
+  std::unique_ptr<ImageRenderer> imageRenderer;
   BuildStats stats;
 };
+
+// Renders the job: with its image renderer when it has one, else with the sampler renderer and
+// its integrator; in doubling passes when options.afterPass or options.timeBudget is set.
+ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options);
 
 RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& options,
                          const EmbreeDevice& device);

@@ -16,8 +16,9 @@ RenderedScene run(const std::string& text, const BuildOptions& build, const Rend
         out.jobs.push_back(buildRenderJob(desc, build, embreeDevice()));
         if (render) {
           RenderJob& job = out.jobs.back();
-          SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
-          out.results.push_back(renderer.render(*job.scene, *job.film, *render));
+          ProgressiveOptions po;
+          po.render = *render;
+          out.results.push_back(renderJob(job, po).total);
         }
       },
       {});
