@@ -27,15 +27,30 @@ SCENES = {"cornell-box": "scenes/cornell-box/cornell-box.pbrt",
           "caustic": "scenes/caustic/caustic.pbrt",
           "indirect-room": "scenes/indirect-room/indirect-room.pbrt",
           "spheres": "scenes/spheres/spheres.pbrt"}
+# Each scene's size, for the parameters given in scene units (the photon search radius).
+SCENE_SIZE = {"cornell-box": 550, "caustic": 16, "indirect-room": 10, "spheres": 10}
 DEFAULT_SCENES = ["cornell-box", "caustic", "indirect-room"]
-INTEGRATORS = {"path": '"path" "integer maxdepth" [8]',
-               "directlighting": '"directlighting"'}
+# Every method at its scene-file defaults except the depth of the unbiased ones, which matches the
+# reference's (deep enough that Russian roulette, not the limit, ends the paths), and the photon
+# radius, scaled to the scene ({size}: SCENE_SIZE).
+INTEGRATORS = {"path": '"path" "integer maxdepth" [100]',
+               "directlighting": '"directlighting"',
+               "bdpt": '"bdpt" "integer maxdepth" [100]',
+               "photonmap": '"photonmap" "float maxdist" [{maxdist}]',
+               "irradiancecache": '"irradiancecache"',
+               "igi": '"igi"'}
 SAMPLERS = {"stratified": '"stratified"', "random": '"random"'}
-DEFAULT_METHODS = [f"{i}/{s}" for i in INTEGRATORS for s in SAMPLERS]
+DEFAULT_METHODS = ["path/stratified", "path/random", "directlighting/stratified",
+                   "bdpt/stratified", "photonmap/stratified", "irradiancecache/stratified",
+                   "igi/stratified"]
 
 
-def variant(scene_text, integrator, sampler):
-    s = re.sub(r'^SurfaceIntegrator .*$', "SurfaceIntegrator " + INTEGRATORS[integrator], scene_text,
+def integrator_statement(integrator, scene):
+    return "SurfaceIntegrator " + INTEGRATORS[integrator].format(maxdist=SCENE_SIZE[scene] / 100)
+
+
+def variant(scene_text, integrator, sampler, scene):
+    s = re.sub(r'^SurfaceIntegrator .*$', integrator_statement(integrator, scene), scene_text,
                flags=re.M)
     return re.sub(r'^Sampler [^\n]*$', "Sampler " + SAMPLERS[sampler], s, flags=re.M)
 
@@ -103,8 +118,8 @@ def main():
         # scene file selects; a fixed file name keeps tools/reference.sh's cache.
         ref_scene = os.path.join(os.path.dirname(scene_path), f".{name}-reference.pbrt")
         with open(ref_scene, "w") as f:
-            f.write(re.sub(r'^SurfaceIntegrator .*$', "SurfaceIntegrator " + INTEGRATORS["path"],
-                           text, flags=re.M))
+            f.write(re.sub(r'^SurfaceIntegrator .*$', integrator_statement("path", name), text,
+                           flags=re.M))
         try:
             ref = subprocess.run([os.path.join(ROOT, "tools", "reference.sh"), ref_scene,
                                   str(args.ref_spp), "1000"] + quick, env=env, check=True,
@@ -119,7 +134,7 @@ def main():
                 os.remove(log)
             with tempfile.NamedTemporaryFile("w", suffix=".pbrt", dir=os.path.dirname(scene_path),
                                              delete=False) as f:
-                f.write(variant(text, integ, samp))
+                f.write(variant(text, integ, samp, name))
             try:
                 subprocess.run([candela, f.name, "--spp", str(args.spp), "--seed", "1",
                                 "--reference", ref, "--error-log", log, "-o",

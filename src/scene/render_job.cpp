@@ -1,5 +1,7 @@
 #include "scene/render_job.h"
 
+#include <algorithm>
+#include <chrono>
 #include <sstream>
 
 #include "accel/aggregate_factory.h"
@@ -278,7 +280,12 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
     pre.warn = [warn = options.warn, loc = integratorDesc.loc](const std::string& message) {
       warn(loc, message);
     };
-  if (job.integrator) job.integrator->preprocess(*job.scene, pre);
+  if (job.integrator) {
+    auto start = std::chrono::steady_clock::now();
+    job.integrator->preprocess(*job.scene, pre);
+    job.preprocessSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   return job;
 }
 
@@ -286,13 +293,26 @@ ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options) {
   if (job.imageRenderer)
     return job.imageRenderer->render(*job.scene, *job.camera, *job.film, options);
   SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
-  if (options.afterPass || options.timeBudget > 0)
-    return renderProgressive(renderer, *job.scene, *job.film, job.sampler->samplesPerPixel(),
-                             options);
   ProgressiveResult result;
-  result.total = renderer.render(*job.scene, *job.film, options.render);
-  result.spp = job.sampler->samplesPerPixel();
-  result.passes = 1;
+  if (options.afterPass || options.timeBudget > 0) {
+    // The passes' clock starts after the preprocess; reports and the budget count it too.
+    ProgressiveOptions po = options;
+    po.timeBudget = std::max(0.0, options.timeBudget - job.preprocessSeconds);
+    if (options.timeBudget > 0 && po.timeBudget == 0) po.timeBudget = 1e-9;
+    if (options.afterPass)
+      po.afterPass = [&](const PassReport& pass) {
+        PassReport withPrepass = pass;
+        withPrepass.seconds += job.preprocessSeconds;
+        withPrepass.total.seconds += job.preprocessSeconds;
+        return options.afterPass(withPrepass);
+      };
+    result = renderProgressive(renderer, *job.scene, *job.film, job.sampler->samplesPerPixel(), po);
+  } else {
+    result.total = renderer.render(*job.scene, *job.film, options.render);
+    result.spp = job.sampler->samplesPerPixel();
+    result.passes = 1;
+  }
+  result.total.seconds += job.preprocessSeconds;
   return result;
 }
 

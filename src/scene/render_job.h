@@ -90,6 +90,9 @@ struct RenderJob {
   // of the whole image (Metropolis, SPPM) that replaces both.
   std::unique_ptr<SurfaceIntegrator> integrator;
   std::unique_ptr<ImageRenderer> imageRenderer;
+  // Wall time of the integrator's preprocess (photon maps, VPLs) at build: renderJob counts it as
+  // render time, so that methods with and without a prepass compare by their whole cost.
+  double preprocessSeconds = 0;
   BuildStats stats;
 };
 
