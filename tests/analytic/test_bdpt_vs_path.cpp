@@ -19,22 +19,7 @@ namespace candela {
 namespace {
 
 std::string cornellBox(const std::string& integrator, int res, const std::string& extra = "") {
-  std::ifstream in(std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/cornell-box.pbrt");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string s = ss.str();
-  auto replace = [&](const std::string& from, const std::string& to) {
-    size_t at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) s.replace(at, from.size(), to);
-  };
-  std::string r = "[";
-  r.append(std::to_string(res)).append("]");
-  replace("[256]", r);
-  replace("[256]", r);
-  replace("SurfaceIntegrator \"path\" \"integer maxdepth\" [5]", integrator);
-  replace("WorldEnd", extra + "WorldEnd");
-  return s;
+  return test::cornellBoxText(res, integrator, extra);
 }
 
 constexpr int kRegions = 4;

@@ -10,24 +10,7 @@
 namespace candela {
 namespace {
 
-std::string cornellBox(int resolution) {
-  std::ifstream in(std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/cornell-box.pbrt");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string s = ss.str();
-  // Smaller and cheaper for a test: the same scene at low resolution.
-  auto replace = [&](const std::string& from, const std::string& to) {
-    size_t at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) s.replace(at, from.size(), to);
-  };
-  // Built by appending: GCC 12 warns falsely (-Wrestrict) on "[" + std::string and on insert.
-  std::string bracketed = "[";
-  bracketed.append(std::to_string(resolution)).append("]");
-  replace("[256]", bracketed);
-  replace("[256]", bracketed);
-  return s;
-}
+std::string cornellBox(int resolution) { return test::cornellBoxText(resolution); }
 
 test::RenderedScene render(const std::string& scene, int threads, int tile,
                            std::optional<Bounds2f> crop = std::nullopt, uint64_t seed = 7) {

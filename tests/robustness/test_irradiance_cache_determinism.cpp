@@ -15,23 +15,9 @@ namespace {
 // The Cornell box at low resolution, with a cheap cache; minpixelspacing below a pixel so that
 // the last rounds of the prepass place samples, where an order dependence would show.
 std::string cornellBoxCache(int resolution) {
-  std::ifstream in(std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/cornell-box.pbrt");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string s = ss.str();
-  auto replace = [&](const std::string& from, const std::string& to) {
-    size_t at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) s.replace(at, from.size(), to);
-  };
-  std::string bracketed = "[";
-  bracketed.append(std::to_string(resolution)).append("]");
-  replace("[256]", bracketed);
-  replace("[256]", bracketed);
-  replace("SurfaceIntegrator \"path\" \"integer maxdepth\" [5]",
-          "SurfaceIntegrator \"irradiancecache\" \"integer nsamples\" [32] "
-          "\"float minpixelspacing\" [0.7] \"float maxpixelspacing\" [6]");
-  return s;
+  return test::cornellBoxText(resolution,
+                              "SurfaceIntegrator \"irradiancecache\" \"integer nsamples\" [32] "
+                              "\"float minpixelspacing\" [0.7] \"float maxpixelspacing\" [6]");
 }
 
 test::RenderedScene render(const std::string& scene, int threads, int tile,

@@ -1,5 +1,9 @@
 #include "support/render_scene.h"
 
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
 #include "accel/embree/embree_device.h"
 #include "scene/parser.h"
 #include "scene/scene_builder.h"
@@ -27,6 +31,29 @@ RenderedScene run(const std::string& text, const BuildOptions& build, const Rend
   return out;
 }
 }  // namespace
+
+std::string cornellBoxText(int resolution, const std::string& integrator,
+                           const std::string& beforeWorldEnd) {
+  std::ifstream in(std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/cornell-box.pbrt");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string s = ss.str();
+  auto replace = [&](const std::string& from, const std::string& to) {
+    size_t at = s.find(from);
+    if (at == std::string::npos)
+      throw std::logic_error("cornell-box.pbrt no longer has '" + from + "'");
+    s.replace(at, from.size(), to);
+  };
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) on "[" + std::string and on insert.
+  std::string bracketed = "[";
+  bracketed.append(std::to_string(resolution)).append("]");
+  replace("[256]", bracketed);
+  replace("[256]", bracketed);
+  if (!integrator.empty())
+    replace("SurfaceIntegrator \"path\" \"integer maxdepth\" [5]", integrator);
+  if (!beforeWorldEnd.empty()) replace("WorldEnd", beforeWorldEnd + "WorldEnd");
+  return s;
+}
 
 RenderedScene renderSceneText(const std::string& text, const TestRenderOptions& options) {
   return run(text, options.build, &options.render);

@@ -21,6 +21,11 @@ struct TestRenderOptions {
   RenderOptions render{0, 16, true};
 };
 
+// scenes/cornell-box at resolution x resolution, with its SurfaceIntegrator statement replaced
+// by integrator (when not empty) and beforeWorldEnd inserted before its WorldEnd.
+std::string cornellBoxText(int resolution, const std::string& integrator = "",
+                           const std::string& beforeWorldEnd = "");
+
 // Throws what the parser or factories throw.
 RenderedScene renderSceneText(const std::string& text, const TestRenderOptions& options = {});
 // Only parse and build (no rendering).
