@@ -104,12 +104,13 @@ class SppmIteration {
     ++rays.cameraRays;
     if (weight == 0) return;
     Spectrum beta(weight), ld(0);
-    bool specularBounce = false;
+    bool specularBounce = false, counted = false;
     for (int depth = 0; depth < s_.maxDepth;) {
       SurfaceInteraction isect;
       Float tMax = ray.tMax;
       bool hit = scene_.intersect(ray, &isect, rays);
-      if (depth == 0 && hit) ++px.hits;
+      if (hit && !counted) ++px.hits;  // once, past material-less interfaces too
+      counted = true;
       bool countEmission = depth == 0 || specularBounce;
       if (!hit) {
         if (countEmission)
@@ -165,8 +166,13 @@ class SppmIteration {
                   const std::array<Float, kPhotonDims>& shift, MemoryArena& arena,
                   std::vector<Deposit>* out, RayStats& rays) const {
     if (!lights_) return;
+    // The Halton index is 32 bits: each further 2^32 photons take another rotation.
+    std::array<Float, kPhotonDims> rotated = shift;
+    if (uint64_t epoch = g >> 32)
+      for (int d = 0; d < kPhotonDims; ++d)
+        rotated[d] = rotation(s_.seed ^ epoch, kPhotonTag, uint64_t(d));
     std::array<Float, kPhotonDims> u;
-    for (int d = 0; d < kPhotonDims; ++d) u[d] = rotatedHalton(g, d, shift[d]);
+    for (int d = 0; d < kPhotonDims; ++d) u[d] = rotatedHalton(g, d, rotated[d]);
     RNG rng(hashValues({s_.seed, kPhotonTag, g}));
     Float lightPmf;
     int li = lights_->sampleDiscrete(u[0], &lightPmf);
@@ -398,7 +404,6 @@ ProgressiveResult SppmRenderer::render(const Scene& scene, const Camera& camera,
   }
   progress.done();
   if (!reported && done > 0) report();
-  if (done == 0) writeFilm(1);  // no iteration ran: the film holds black
   result.total.seconds = elapsed();
   {
     std::lock_guard<std::mutex> lock(statsMutex_);
