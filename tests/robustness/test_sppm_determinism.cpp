@@ -14,20 +14,24 @@
 namespace candela {
 namespace {
 
-std::string room(int iterations) {
+// photons: "integer photonsperiteration" or, when 0, the default (the full image's pixel count).
+std::string room(int iterations, int photons = 3000) {
+  std::string count = photons ? " \"integer photonsperiteration\" [" + std::to_string(photons) + "]"
+                              : std::string();
   return test::causticRoom(16, 1,
                            "\"sppm\" \"integer numiterations\" [" + std::to_string(iterations) +
-                               "] \"float radius\" [0.15] \"integer photonsperiteration\" [3000]");
+                               "] \"float radius\" [0.15]" + count);
 }
 
-ImageBuffer render(int iterations, int threads, int tile, std::optional<Bounds2f> crop = {}) {
+ImageBuffer render(int iterations, int threads, int tile, std::optional<Bounds2f> crop = {},
+                   int photons = 3000) {
   test::TestRenderOptions o;
   o.build.seed = 5;
   o.build.nThreads = threads;
   o.build.cropWindow = crop;
   o.render.nThreads = threads;
   o.render.tileSize = tile;
-  return test::renderSceneText(room(iterations), o).film().image();
+  return test::renderSceneText(room(iterations, photons), o).film().image();
 }
 
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
@@ -42,17 +46,22 @@ TEST(SppmDeterminism, SameBitsForThreadsTilesAndCrop) {
   for (float v : one.data) sum += v;
   EXPECT_GT(sum, 0);  // not trivially equal
 
-  // x in [4, 12), y in [8, 16) of the 16 x 16 image.
-  ImageBuffer crop = render(5, 2, 3, Bounds2f(Point2f(0.25f, 0.5f), Point2f(0.75f, 1)));
-  ASSERT_EQ(crop.width, 8);
-  ASSERT_EQ(crop.height, 8);
-  const int nc = one.channelCount();
-  ASSERT_EQ(crop.channelCount(), nc);
-  std::vector<float> region;
-  for (int y = 8; y < 16; ++y)
-    for (int x = 4; x < 12; ++x)
-      for (int c = 0; c < nc; ++c) region.push_back(one.data[(size_t(y) * 16 + x) * nc + c]);
-  EXPECT_TRUE(sameBits(region, crop.data));
+  // x in [4, 12), y in [8, 16) of the 16 x 16 image; also with the default photon count, which
+  // follows the full image, not the crop.
+  for (int photons : {3000, 0}) {
+    SCOPED_TRACE(photons);
+    ImageBuffer full = photons ? one : render(5, 1, 16, {}, photons);
+    ImageBuffer crop = render(5, 2, 3, Bounds2f(Point2f(0.25f, 0.5f), Point2f(0.75f, 1)), photons);
+    ASSERT_EQ(crop.width, 8);
+    ASSERT_EQ(crop.height, 8);
+    const int nc = full.channelCount();
+    ASSERT_EQ(crop.channelCount(), nc);
+    std::vector<float> region;
+    for (int y = 8; y < 16; ++y)
+      for (int x = 4; x < 12; ++x)
+        for (int c = 0; c < nc; ++c) region.push_back(full.data[(size_t(y) * 16 + x) * nc + c]);
+    EXPECT_TRUE(sameBits(region, crop.data));
+  }
 
   // Another seed is another image.
   test::TestRenderOptions o;
