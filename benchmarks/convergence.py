@@ -32,21 +32,26 @@ SCENE_SIZE = {"cornell-box": 550, "caustic": 16, "indirect-room": 10, "spheres":
 DEFAULT_SCENES = ["cornell-box", "caustic", "indirect-room"]
 # Every method at its scene-file defaults except the depth of the unbiased ones, which matches the
 # reference's (deep enough that Russian roulette, not the limit, ends the paths), and the photon
-# radius, scaled to the scene ({size}: SCENE_SIZE).
+# radii, in scene units: photonmap's maxdist a hundredth of the scene, SPPM's initial radius about
+# an eightieth (smaller ones left the caustic scene speckled at 64 iterations). --spp sets SPPM's
+# iterations; it takes no Sampler, so one sampler suffices.
 INTEGRATORS = {"path": '"path" "integer maxdepth" [100]',
                "directlighting": '"directlighting"',
                "bdpt": '"bdpt" "integer maxdepth" [100]',
                "photonmap": '"photonmap" "float maxdist" [{maxdist}]',
                "irradiancecache": '"irradiancecache"',
-               "igi": '"igi"'}
+               "igi": '"igi"',
+               "sppm": '"sppm" "integer maxdepth" [100] "float radius" [{radius}]'}
+SPPM_RADIUS = {"cornell-box": 8, "caustic": 0.2, "indirect-room": 0.2, "spheres": 0.2}
 SAMPLERS = {"stratified": '"stratified"', "random": '"random"'}
 DEFAULT_METHODS = ["path/stratified", "path/random", "directlighting/stratified",
                    "bdpt/stratified", "photonmap/stratified", "irradiancecache/stratified",
-                   "igi/stratified"]
+                   "igi/stratified", "sppm/stratified"]
 
 
 def integrator_statement(integrator, scene):
-    return "SurfaceIntegrator " + INTEGRATORS[integrator].format(maxdist=SCENE_SIZE[scene] / 100)
+    return "SurfaceIntegrator " + INTEGRATORS[integrator].format(
+        maxdist=SCENE_SIZE[scene] / 100, radius=SPPM_RADIUS[scene])
 
 
 def variant(scene_text, integrator, sampler, scene):

@@ -101,6 +101,12 @@ long Film::pixelSampleCount(const Point2i& pixel) const {
   return pixelBounds_.inside(pixel) ? at(pixel).count : 0;
 }
 
+void Film::setPixel(const Point2i& pixel, const Spectrum& L, Float alpha) {
+  if (!pixelBounds_.inside(pixel)) return;
+  at(pixel) = Pixel{};
+  addSample(pixel, L, alpha, 1);
+}
+
 Spectrum Film::pixelValue(const Point2i& pixel) const {
   if (!pixelBounds_.inside(pixel)) return Spectrum(0);
   const Pixel& px = at(pixel);

@@ -51,6 +51,9 @@ class Film {
 
   // weight is the filter sample's weight; alpha 1 where a surface was hit.
   void addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);
+  // Replaces whatever the pixel holds by one sample of weight 1: for renderers that keep their
+  // own per-pixel estimate and write it out whole (SPPM). Ignored outside the pixel bounds.
+  void setPixel(const Point2i& pixel, const Spectrum& L, Float alpha);
   // Weighted mean radiance of a pixel (black if it has no samples), plus its splats.
   Spectrum pixelValue(const Point2i& pixel) const;
   Float pixelAlpha(const Point2i& pixel) const;

@@ -44,6 +44,7 @@ struct ImageRendererContext {
   bool quick = false;
   Bounds2i pixelBounds;                                          // the film's (crop window applied)
   std::function<void(const FileLoc&, const std::string&)> warn;  // may be empty
+  int sppOverride = 0;  // the command line's --spp; 0: none
 };
 
 // The whole-image renderer that an Integrator statement (pbrt-v3: "sppm", "mlt") or a Renderer

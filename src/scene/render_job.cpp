@@ -232,6 +232,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   }
   ImageRendererContext irc{job.camera.get(), job.sampler.get(),       options.seed,
                            options.quick,    job.film->pixelBounds(), warn};
+  irc.sppOverride = options.sppOverride;
   job.imageRenderer = createImageRenderer(integratorDesc, desc.renderer, irc);
   if (job.imageRenderer) {
     reportUnused(desc.renderer, warn);

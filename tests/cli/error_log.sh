@@ -22,4 +22,15 @@ head -1 log.csv | grep -qx 'seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95'
 grep -q "estimated from variance" t.txt || { echo "FAIL: no estimate"; cat t.txt; exit 1; }
 grep -a -q "target error" t.exr || { echo "FAIL: stop reason not in EXR"; exit 1; }
 grep -a -q "candela:targetError" t.exr || { echo "FAIL: target not in EXR"; exit 1; }
+# SPPM (an ImageRenderer) logs after 1, 2, 4 iterations and the last; --spp sets the iterations,
+# --stats reports them, and the error against a 64-iteration render of another seed falls.
+sed 's/^SurfaceIntegrator .*/SurfaceIntegrator "sppm" "float radius" [8]/' "$scene" > sppm.pbrt
+"$candela" sppm.pbrt --quick --spp 64 --seed 9 -o sppm-ref.exr --preview none -q
+"$candela" sppm.pbrt --quick --spp 5 -o sppm.exr --reference sppm-ref.exr --error-log sppm.csv \
+  --stats --preview none -q > sppm-stats.txt 2>&1
+[ "$(tail -n +2 sppm.csv | cut -d, -f2 | tr '\n' ' ')" = "1 2 4 5 " ] ||
+  { echo "FAIL: sppm passes"; cat sppm.csv; exit 1; }
+awk -F, 'NR == 2 { first = $5 } END { exit !($5 < first) }' sppm.csv ||
+  { echo "FAIL: sppm error did not fall"; cat sppm.csv; exit 1; }
+grep -q "sppm iterations  5" sppm-stats.txt || { echo "FAIL: sppm stats"; cat sppm-stats.txt; exit 1; }
 echo "error log: ok"

@@ -1,0 +1,85 @@
+// "sppm"'s scene parameters (pbrt-v3's): every bad value is a SceneError located at the
+// parameter; good ones build, unknown names are reported and imagewritefrequency is accepted.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error.h"
+#include "renderers/sppm_renderer.h"
+#include "support/render_scene.h"
+
+namespace candela {
+namespace {
+
+// The integrator's parameter sits alone on line 3 of the file.
+std::string sceneWith(const std::string& parameter) {
+  return "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n"
+         "Integrator \"sppm\"\n"
+         "  " +
+         parameter +
+         "\n"
+         "WorldBegin\n"
+         "LightSource \"point\" \"point from\" [0 0 -1]\n"
+         "Shape \"sphere\" \"float radius\" [0.5]\n"
+         "WorldEnd\n";
+}
+
+TEST(SppmParameters, EveryBadValueIsALocatedSceneError) {
+  for (const char* bad :
+       {"\"integer numiterations\" [0]", "\"integer numiterations\" [-2]", "\"float radius\" [0]",
+        "\"float radius\" [-1]", "\"integer maxdepth\" [-1]", "\"integer photonsperiteration\" [0]",
+        "\"integer photonsperiteration\" [-2]"}) {
+    SCOPED_TRACE(bad);
+    std::string name = std::string(bad).substr(std::string(bad).find(' ') + 1);
+    name = name.substr(0, name.find('"'));
+    try {
+      test::buildSceneText(sceneWith(bad));
+      ADD_FAILURE() << "no error";
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.location().line, 3) << e.what();
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  }
+}
+
+const SppmRenderer& sppmOf(test::RenderedScene& built) {
+  auto* r = dynamic_cast<const SppmRenderer*>(built.job().imageRenderer.get());
+  if (!r) throw std::runtime_error("not an SPPM renderer");
+  return *r;
+}
+
+TEST(SppmParameters, DefaultsGoodValuesAndUnknownNames) {
+  auto defaults = test::buildSceneText(sceneWith(""));
+  const SppmSettings& d = sppmOf(defaults).settings();
+  EXPECT_EQ(d.iterations, 64);
+  EXPECT_EQ(d.maxDepth, 5);
+  EXPECT_EQ(d.photonsPerIteration, -1);
+  EXPECT_EQ(d.initialRadius, 1);
+
+  BuildOptions options;
+  std::string warnings;
+  options.warn = [&](const FileLoc&, const std::string& m) { warnings += m + "\n"; };
+  auto good = test::buildSceneText(
+      sceneWith("\"integer numiterations\" [3] \"integer maxdepth\" [0] "
+                "\"integer photonsperiteration\" [100] \"float radius\" [0.01] "
+                "\"integer imagewritefrequency\" [1]"),
+      options);
+  EXPECT_EQ(warnings, "");
+  const SppmSettings& s = sppmOf(good).settings();
+  EXPECT_EQ(s.iterations, 3);
+  EXPECT_EQ(s.maxDepth, 0);
+  EXPECT_EQ(s.photonsPerIteration, 100);
+  EXPECT_FLOAT_EQ(s.initialRadius, 0.01f);
+
+  test::buildSceneText(sceneWith("\"integer numiteration\" [8]"), options);
+  EXPECT_NE(warnings.find("numiteration"), std::string::npos) << warnings;
+
+  // --quick renders a sixteenth of the iterations (pbrt-v3's rule).
+  BuildOptions quick;
+  quick.quick = true;
+  auto q = test::buildSceneText(sceneWith(""), quick);
+  EXPECT_EQ(sppmOf(q).settings().iterations, 4);
+}
+
+}  // namespace
+}  // namespace candela
