@@ -1,4 +1,5 @@
 // Integrator / Renderer statements that select a whole-image renderer.
+#include "scene/metropolis_params.h"
 #include "scene/plugin_factories.h"
 
 namespace candela {
@@ -6,9 +7,8 @@ namespace candela {
 std::unique_ptr<ImageRenderer> createImageRenderer(const PluginDesc& integrator,
                                                    const PluginDesc& renderer,
                                                    const ImageRendererContext& context) {
-  (void)integrator;
-  (void)renderer;
-  (void)context;
+  if (integrator.name == "mlt") return createMltRenderer(integrator, context);
+  if (renderer.name == "metropolis") return createMetropolisRenderer(renderer, context);
   return nullptr;
 }
 
