@@ -244,8 +244,7 @@ int BdptIntegrator::randomWalk(RayDifferential ray, Spectrum beta, Float pdfDir,
 }
 
 int BdptIntegrator::cameraSubpath(const RayDifferential& ray, const Scene& scene,
-                                  IntegratorContext& ctx, PathVertex* path,
-                                  int maxVertices) const {
+                                  IntegratorContext& ctx, PathVertex* path, int maxVertices) const {
   PathVertex& c = path[0];
   c = PathVertex();
   c.kind = PathVertex::Kind::Camera;
@@ -452,10 +451,9 @@ Spectrum BdptIntegrator::Li(const RayDifferential& ray, const Scene& scene, Inte
 
 Spectrum BdptIntegrator::fixedLengthContribution(const RayDifferential& ray, int depth, int s,
                                                  Weighting weighting, bool excludeDirect,
-                                                 const Scene& scene,
-                                                 const PathSamplers& samplers, MemoryArena& arena,
-                                                 RayStats& stats, Point2f* pRaster,
-                                                 bool* elsewhere) const {
+                                                 const Scene& scene, const PathSamplers& samplers,
+                                                 MemoryArena& arena, RayStats& stats,
+                                                 Point2f* pRaster, bool* elsewhere) const {
   *elsewhere = false;
   const int n = depth + 2;
   if (depth < 0 || depth > maxDepth_) return Spectrum(0);
@@ -486,16 +484,15 @@ Spectrum BdptIntegrator::fixedLengthContribution(const RayDifferential& ray, int
   // n - 1 vertices connect to a light sample (s = 1).
   Spectrum L(0);
   int nCamera = cameraSubpath(ray, scene, cameraCtx, cameraPath.data(), n);
-  if (excludeDirect && nCamera >= n - 1 && onlySpecularBefore(cameraPath.data(), n - 2))
-    return L;
+  if (excludeDirect && nCamera >= n - 1 && onlySpecularBefore(cameraPath.data(), n - 2)) return L;
   if (nCamera == n) {
     bool afterSpecular = n == 2 || cameraPath[size_t(n - 2)].delta;
     if (afterSpecular)
       L += connect(scene, lightPath.data(), cameraPath.data(), 0, n, connectCtx, pRaster, &weight);
   }
   if (nCamera >= n - 1 && n - 1 >= 2)
-    L += connect(scene, lightPath.data(), cameraPath.data(), 1, n - 1, connectCtx, pRaster,
-                 &weight);
+    L +=
+        connect(scene, lightPath.data(), cameraPath.data(), 1, n - 1, connectCtx, pRaster, &weight);
   return L;
 }
 

@@ -35,9 +35,12 @@ struct PathSample {
 
 class PathEvaluator {
  public:
-  PathEvaluator(const MetropolisSettings& settings, const BdptIntegrator& paths,
-                const Scene& scene, const Camera& camera, const Point2i& resolution)
-      : settings_(settings), paths_(paths), scene_(scene), camera_(camera),
+  PathEvaluator(const MetropolisSettings& settings, const BdptIntegrator& paths, const Scene& scene,
+                const Camera& camera, const Point2i& resolution)
+      : settings_(settings),
+        paths_(paths),
+        scene_(scene),
+        camera_(camera),
         resolution_(resolution),
         differentialScale_(1 / std::sqrt(Float(std::max<int64_t>(1, settings.mutationsPerPixel)))) {
   }
@@ -73,9 +76,9 @@ class PathEvaluator {
     BdptIntegrator::PathSamplers samplers{cameraStream, lightStream, connection};
     Point2f pElsewhere;
     bool elsewhere = false;
-    Spectrum L = paths_.fixedLengthContribution(ray, depth, s, weighting, settings_.excludeDirect,
-                                                scene_, samplers, ts.arena, ts.rays, &pElsewhere,
-                                                &elsewhere);
+    Spectrum L =
+        paths_.fixedLengthContribution(ray, depth, s, weighting, settings_.excludeDirect, scene_,
+                                       samplers, ts.arena, ts.rays, &pElsewhere, &elsewhere);
     ts.arena.reset();
     L *= rayWeight * strategies;
     if (!L.isFinite()) {
@@ -138,8 +141,7 @@ RenderResult runMetropolisChains(const MetropolisSettings& settings, const BdptI
   }
   double sum = 0;
   for (Float w : weights) sum += w;
-  const double b =
-      settings.bootstrapSamples > 0 ? sum / double(settings.bootstrapSamples) : 0;
+  const double b = settings.bootstrapSamples > 0 ? sum / double(settings.bootstrapSamples) : 0;
   if (stats) stats->b = b;
 
   SplatBuffer& splats = film.enableSplats();
@@ -154,8 +156,7 @@ RenderResult runMetropolisChains(const MetropolisSettings& settings, const BdptI
     auto runChain = [&](int c) {
       enableFlushToZero();
       ThreadState& ts = threadStates.local();
-      int64_t mutations =
-          totalMutations / chains + (int64_t(c) < totalMutations % chains ? 1 : 0);
+      int64_t mutations = totalMutations / chains + (int64_t(c) < totalMutations % chains ? 1 : 0);
       RNG pick(hashValues({seed, kChainPick, uint64_t(c)}));
       int k = startDistribution.sampleDiscrete(pick.uniformFloat());
       int depth = k % depths;
