@@ -9,8 +9,9 @@
 //                            replaces it)
 //   largestepprobability 0.3 probability that a proposal is a fresh path
 //   sigma 0.01               standard deviation of a small step in primary sample space
-// "metropolis" (pbrt 2e §15.7, on the same chains; its 100 chains are pbrt-v3's default count
-// of 1000 here, as pbrt-v2 has no such parameter):
+// "metropolis" (pbrt 2e §15.7, on the same chains: 1000 of them, and small steps are Gaussian
+// with sigma 0.01 rather than pbrt-v2's exponentially distributed ones; pbrt-v2 has neither
+// parameter):
 //   maxdepth 7, bootstrapsamples 100000, largestepprobability 0.25 as above
 //   samplesperpixel 100      proposals per pixel (--spp replaces it)
 //   bidirectional true       paths of bdpt's strategies; false: unidirectional paths (light
