@@ -457,12 +457,17 @@ Spectrum BdptIntegrator::fixedLengthContribution(const RayDifferential& ray, int
   *elsewhere = false;
   const int n = depth + 2;
   if (depth < 0 || depth > maxDepth_) return Spectrum(0);
-  if (excludeDirect && depth <= 1) return Spectrum(0);
+  if (excludeDirect && depth == 0) return Spectrum(0);
   std::vector<PathVertex> cameraPath(static_cast<size_t>(n));
   std::vector<PathVertex> lightPath(static_cast<size_t>(n));
   IntegratorContext cameraCtx{samplers.camera, arena, stats, nullptr};
   IntegratorContext lightCtx{samplers.light, arena, stats, nullptr};
   IntegratorContext connectCtx{samplers.connection, arena, stats, nullptr};
+  // The direct-lighting integrator's specular recursion stops at maxdepth - 1 bounces: an emitter
+  // seen through maxdepth specular bounces is left to the chains.
+  auto emitterBeyondDirect = [&](const PathVertex* camera, int nVertices) {
+    return depth == maxDepth_ && nVertices >= 3 && camera[nVertices - 2].delta;
+  };
   Float weight = 0;
   if (weighting == Weighting::Mis) {
     s = std::clamp(s, 0, n);
@@ -471,9 +476,11 @@ Spectrum BdptIntegrator::fixedLengthContribution(const RayDifferential& ray, int
     if (cameraSubpath(ray, scene, cameraCtx, cameraPath.data(), t) != t) return Spectrum(0);
     if (s > 0 && lightSubpath(scene, lightCtx, ray.time, lightPath.data(), s) != s)
       return Spectrum(0);
-    // Strategies that connect two light vertices or reach the lens (t = 1) have a non-specular
-    // vertex other than the one next to the light: never direct lighting.
-    if (excludeDirect && s <= 1 && t >= 2 && onlySpecularBefore(cameraPath.data(), n - 2))
+    // Beyond depth 1, strategies that connect two light vertices or reach the lens (t = 1) have
+    // a non-specular vertex other than the one next to the light: never direct lighting.
+    if (excludeDirect &&
+        (depth == 1 || (s <= 1 && t >= 2 && onlySpecularBefore(cameraPath.data(), n - 2))) &&
+        !(s == 0 && emitterBeyondDirect(cameraPath.data(), n)))
       return Spectrum(0);
     Spectrum L =
         connect(scene, lightPath.data(), cameraPath.data(), s, t, connectCtx, pRaster, &weight);
@@ -484,13 +491,13 @@ Spectrum BdptIntegrator::fixedLengthContribution(const RayDifferential& ray, int
   // n - 1 vertices connect to a light sample (s = 1).
   Spectrum L(0);
   int nCamera = cameraSubpath(ray, scene, cameraCtx, cameraPath.data(), n);
-  if (excludeDirect && nCamera >= n - 1 && onlySpecularBefore(cameraPath.data(), n - 2)) return L;
-  if (nCamera == n) {
+  bool direct = excludeDirect && nCamera >= n - 1 && onlySpecularBefore(cameraPath.data(), n - 2);
+  if (nCamera == n && !(direct && !emitterBeyondDirect(cameraPath.data(), n))) {
     bool afterSpecular = n == 2 || cameraPath[size_t(n - 2)].delta;
     if (afterSpecular)
       L += connect(scene, lightPath.data(), cameraPath.data(), 0, n, connectCtx, pRaster, &weight);
   }
-  if (nCamera >= n - 1 && n - 1 >= 2)
+  if (nCamera >= n - 1 && n - 1 >= 2 && !direct)
     L +=
         connect(scene, lightPath.data(), cameraPath.data(), 1, n - 1, connectCtx, pRaster, &weight);
   return L;

@@ -53,8 +53,8 @@ class BdptIntegrator : public SurfaceIntegrator {
   // its two strategies. Zero when a subpath ends early. When it lands elsewhere than the ray's
   // own pixel (t = 1), *pRaster is set and *elsewhere true. excludeDirect leaves out what a
   // direct-lighting integrator renders (pbrt 2e §15.7's separate direct lighting): emitters
-  // seen directly or through specular bounces only, and light reflected once at the first
-  // non-specular surface such a chain meets.
+  // seen directly or through specular bounces only (fewer than maxdepth of them), and light
+  // reflected once at the first surface such a chain meets (directlighting with this maxdepth).
   Spectrum fixedLengthContribution(const RayDifferential& ray, int depth, int s,
                                    Weighting weighting, bool excludeDirect, const Scene& scene,
                                    const PathSamplers& samplers, MemoryArena& arena,

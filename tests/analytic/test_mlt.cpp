@@ -152,5 +152,26 @@ TEST(MltAnalytic, PointLightOverDiffuseDisk) {
       8, 32, expected);
 }
 
+// A mirror (Kr 0.9) under a uniform sky: every pixel sees the sky through one specular bounce,
+// L = 0.9 L_sky = 1.8. With direct lighting rendered separately this is the directlighting
+// integrator's (its specular recursion) at maxdepth 3, but the chains' at maxdepth 1, where that
+// recursion stops before the bounce: each variant must count it exactly once.
+TEST(MetropolisAnalytic, MirrorUnderUniformSky) {
+  const char* world =
+      "LightSource \"infinite\" \"rgb L\" [2 2 2]\n"
+      "Material \"mirror\"\n"
+      "Shape \"disk\" \"float radius\" [4]\n";
+  for (int maxDepth : {1, 3}) {
+    for (const char* variant :
+         {"", "\"bool bidirectional\" \"false\"", "\"bool dodirectseparately\" \"false\""}) {
+      SCOPED_TRACE(std::string(variant) + " maxdepth " + std::to_string(maxDepth));
+      expectPixelsMatch(scene(metropolis(maxDepth, 64, variant), kLookDown, world, 4), 4, 32,
+                        [](int, int) { return 1.8; });
+    }
+    expectPixelsMatch(scene(mlt(maxDepth, 64), kLookDown, world, 4), 4, 32,
+                      [](int, int) { return 1.8; });
+  }
+}
+
 }  // namespace
 }  // namespace candela
