@@ -2,6 +2,7 @@
 // only on (seed, c), the bootstrap's on its sample index, and splats are order-independent
 // fixed-point sums. So 1 and 2 threads render the same bits, and a crop window renders the same
 // bits as that region of the full image (every chain runs; only what lands in the crop is kept).
+// Every pixel of a closed scene has alpha 1, with or without a direct-lighting pass.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -62,6 +63,7 @@ void expectDeterministic(const std::string& transport) {
     for (int x = full.pMin.x; x < full.pMax.x; ++x) {
       Point2i p(x, y);
       total += a.pixelValue(p).y();
+      EXPECT_EQ(a.pixelAlpha(p), 1) << x << "," << y;  // the camera is inside a closed sphere
       EXPECT_TRUE(sameBits(a.pixelValue(p), b.pixelValue(p))) << x << "," << y;
     }
   EXPECT_GT(total, 0);  // the scene is lit: the comparison is not of two black images
