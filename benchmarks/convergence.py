@@ -4,7 +4,8 @@
     benchmarks/convergence.py [--out DIR] [--spp N] [--ref-spp N] [--full]
                               [--scenes a,b] [--methods path/stratified,...]
 
-Renders each scene's reference once (tools/reference.sh caches it; path tracing at --ref-spp),
+Renders each scene's reference once (tools/reference.sh caches it; path tracing at --ref-spp,
+bidirectional for the caustic scene),
 then each method with --reference and --error-log, and writes DIR/convergence.csv (the table),
 DIR/convergence.md (the same as Markdown) and one plot per scene DIR/<scene>.png
 (tools/plot_convergence.py). By default scenes render at --quick resolution so the whole run takes
@@ -30,6 +31,9 @@ SCENES = {"cornell-box": "scenes/cornell-box/cornell-box.pbrt",
 # Each scene's size, for the parameters given in scene units (the photon search radius).
 SCENE_SIZE = {"cornell-box": 550, "caustic": 16, "indirect-room": 10, "spheres": 10}
 DEFAULT_SCENES = ["cornell-box", "caustic", "indirect-room"]
+# The method that renders each scene's reference: path tracing, except where it converges too
+# slowly to serve (the caustic of a small light seen through glass: bidirectional).
+REFERENCE_METHOD = {"caustic": "bdpt"}
 # Every method at its scene-file defaults except the depth of the unbiased ones, which matches the
 # reference's (deep enough that Russian roulette, not the limit, ends the paths), and the photon
 # radii, in scene units: photonmap's maxdist a hundredth of the scene, SPPM's initial radius about
@@ -119,11 +123,12 @@ def main():
     for name in scenes:
         scene_path = os.path.join(ROOT, SCENES[name])
         text = open(scene_path).read()
-        # The reference is path tracing of the same depth as the "path" method, whatever the
-        # scene file selects; a fixed file name keeps tools/reference.sh's cache.
+        # The reference is path tracing (or REFERENCE_METHOD's) of the same depth as the "path"
+        # method, whatever the scene file selects; a fixed file name keeps tools/reference.sh's
+        # cache.
         ref_scene = os.path.join(os.path.dirname(scene_path), f".{name}-reference.pbrt")
         with open(ref_scene, "w") as f:
-            f.write(re.sub(r'^SurfaceIntegrator .*$', integrator_statement("path", name), text,
+            f.write(re.sub(r'^SurfaceIntegrator .*$', integrator_statement(REFERENCE_METHOD.get(name, "path"), name), text,
                            flags=re.M))
         try:
             ref = subprocess.run([os.path.join(ROOT, "tools", "reference.sh"), ref_scene,

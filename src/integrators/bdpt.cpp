@@ -17,6 +17,13 @@ namespace {
 
 Float remap0(Float pdf) { return pdf != 0 ? pdf : 1; }
 
+// Whether camera-path vertices 1 .. end - 1 all scattered specularly (true when there are none).
+bool onlySpecularBefore(const PathVertex* cameraPath, int end) {
+  for (int i = 1; i < end; ++i)
+    if (!cameraPath[i].delta) return false;
+  return true;
+}
+
 Vector3f directionTo(const PathVertex& from, const PathVertex& to) {
   return normalize(to.p() - from.p());
 }
@@ -237,7 +244,7 @@ int BdptIntegrator::randomWalk(RayDifferential ray, Spectrum beta, Float pdfDir,
 }
 
 int BdptIntegrator::cameraSubpath(const RayDifferential& ray, const Scene& scene,
-                                  IntegratorContext& ctx, PathVertex* path) const {
+                                  IntegratorContext& ctx, PathVertex* path, int maxVertices) const {
   PathVertex& c = path[0];
   c = PathVertex();
   c.kind = PathVertex::Kind::Camera;
@@ -246,11 +253,12 @@ int BdptIntegrator::cameraSubpath(const RayDifferential& ray, const Scene& scene
   c.beta = Spectrum(1);
   Float pdfPos = 0, pdfDir = 0;
   camera_.pdfWe(ray, &pdfPos, &pdfDir);
-  return randomWalk(ray, Spectrum(1), pdfDir, true, scene, ctx, path, maxDepth_ + 2);
+  return randomWalk(ray, Spectrum(1), pdfDir, true, scene, ctx, path,
+                    maxVertices < 0 ? maxDepth_ + 2 : maxVertices);
 }
 
 int BdptIntegrator::lightSubpath(const Scene& scene, IntegratorContext& ctx, Float time,
-                                 PathVertex* path) const {
+                                 PathVertex* path, int maxVertices) const {
   Float uLight = ctx.sampler.get1D();
   Point2f uPos = ctx.sampler.get2D(), uDir = ctx.sampler.get2D();
   if (lights_.empty()) return 0;
@@ -273,7 +281,8 @@ int BdptIntegrator::lightSubpath(const Scene& scene, IntegratorContext& ctx, Flo
   q.beta = Spectrum(1 / (pmf * pdfPos));
   q.pdfFwd = light->atInfinity() ? infiniteLightDensity(-ray.d) : pmf * pdfPos;
   Spectrum beta = Le * (absDot(nLight, ray.d) / (pmf * pdfPos * pdfDir));
-  int n = randomWalk(RayDifferential(ray), beta, pdfDir, false, scene, ctx, path, maxDepth_ + 1);
+  int n = randomWalk(RayDifferential(ray), beta, pdfDir, false, scene, ctx, path,
+                     maxVertices < 0 ? maxDepth_ + 1 : maxVertices);
   // From infinity the first hit's density is per area of the disk the rays cross.
   if (light->atInfinity() && n > 1) {
     path[1].pdfFwd = pdfPos;
@@ -437,6 +446,60 @@ Spectrum BdptIntegrator::Li(const RayDifferential& ray, const Scene& scene, Inte
       else
         L += c;
     }
+  return L;
+}
+
+Spectrum BdptIntegrator::fixedLengthContribution(const RayDifferential& ray, int depth, int s,
+                                                 Weighting weighting, bool excludeDirect,
+                                                 const Scene& scene, const PathSamplers& samplers,
+                                                 MemoryArena& arena, RayStats& stats,
+                                                 Point2f* pRaster, bool* elsewhere) const {
+  *elsewhere = false;
+  const int n = depth + 2;
+  if (depth < 0 || depth > maxDepth_) return Spectrum(0);
+  if (excludeDirect && depth == 0) return Spectrum(0);
+  std::vector<PathVertex> cameraPath(static_cast<size_t>(n));
+  std::vector<PathVertex> lightPath(static_cast<size_t>(n));
+  IntegratorContext cameraCtx{samplers.camera, arena, stats, nullptr};
+  IntegratorContext lightCtx{samplers.light, arena, stats, nullptr};
+  IntegratorContext connectCtx{samplers.connection, arena, stats, nullptr};
+  // The direct-lighting integrator's specular recursion stops at maxdepth - 1 bounces: an emitter
+  // seen through maxdepth specular bounces is left to the chains.
+  auto emitterBeyondDirect = [&](const PathVertex* camera, int nVertices) {
+    return depth == maxDepth_ && nVertices >= 3 && camera[nVertices - 2].delta;
+  };
+  Float weight = 0;
+  if (weighting == Weighting::Mis) {
+    s = std::clamp(s, 0, n);
+    const int t = n - s;
+    // Both subpaths must reach exactly their lengths for this strategy to make the path.
+    if (cameraSubpath(ray, scene, cameraCtx, cameraPath.data(), t) != t) return Spectrum(0);
+    if (s > 0 && lightSubpath(scene, lightCtx, ray.time, lightPath.data(), s) != s)
+      return Spectrum(0);
+    // Beyond depth 1, strategies that connect two light vertices or reach the lens (t = 1) have
+    // a non-specular vertex other than the one next to the light: never direct lighting.
+    if (excludeDirect &&
+        (depth == 1 || (s <= 1 && t >= 2 && onlySpecularBefore(cameraPath.data(), n - 2))) &&
+        !(s == 0 && emitterBeyondDirect(cameraPath.data(), n)))
+      return Spectrum(0);
+    Spectrum L =
+        connect(scene, lightPath.data(), cameraPath.data(), s, t, connectCtx, pRaster, &weight);
+    *elsewhere = t == 1;
+    return L * weight;
+  }
+  // Unidirectional: the camera subpath of n vertices ends on an emitter (s = 0), or its first
+  // n - 1 vertices connect to a light sample (s = 1).
+  Spectrum L(0);
+  int nCamera = cameraSubpath(ray, scene, cameraCtx, cameraPath.data(), n);
+  bool direct = excludeDirect && nCamera >= n - 1 && onlySpecularBefore(cameraPath.data(), n - 2);
+  if (nCamera == n && !(direct && !emitterBeyondDirect(cameraPath.data(), n))) {
+    bool afterSpecular = n == 2 || cameraPath[size_t(n - 2)].delta;
+    if (afterSpecular)
+      L += connect(scene, lightPath.data(), cameraPath.data(), 0, n, connectCtx, pRaster, &weight);
+  }
+  if (nCamera >= n - 1 && n - 1 >= 2 && !direct)
+    L +=
+        connect(scene, lightPath.data(), cameraPath.data(), 1, n - 1, connectCtx, pRaster, &weight);
   return L;
 }
 

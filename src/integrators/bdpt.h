@@ -35,12 +35,39 @@ class BdptIntegrator : public SurfaceIntegrator {
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
 
+  // For Metropolis light transport over these paths (pbrt 3e §16.4.4): the subpaths, the
+  // connection's fresh samples, each from its own sampler, so that a change in one subpath's
+  // length does not shift the numbers the others read.
+  struct PathSamplers {
+    Sampler& camera;
+    Sampler& light;
+    Sampler& connection;
+  };
+  // How the one strategy of a fixed-length path counts: Mis, as bdpt weighs it against all the
+  // strategies; Unidirectional, a path tracer's rule (pbrt 2e §15.7's unidirectional paths): at
+  // every depth the light sample (s = 1) and, where that cannot make the path (the emitter seen
+  // directly or after a specular bounce), the emitter hit (s = 0), each with weight 1.
+  enum class Weighting { Mis, Unidirectional };
+  // The contribution of the paths of `depth` scattering events that strategy (s light vertices)
+  // makes from the camera ray `ray`: Mis uses strategy s alone; Unidirectional ignores s and adds
+  // its two strategies. Zero when a subpath ends early. When it lands elsewhere than the ray's
+  // own pixel (t = 1), *pRaster is set and *elsewhere true. excludeDirect leaves out what a
+  // direct-lighting integrator renders (pbrt 2e §15.7's separate direct lighting): emitters
+  // seen directly or through specular bounces only (fewer than maxdepth of them), and light
+  // reflected once at the first surface such a chain meets (directlighting with this maxdepth).
+  Spectrum fixedLengthContribution(const RayDifferential& ray, int depth, int s,
+                                   Weighting weighting, bool excludeDirect, const Scene& scene,
+                                   const PathSamplers& samplers, MemoryArena& arena,
+                                   RayStats& stats, Point2f* pRaster, bool* elsewhere) const;
+
  private:
   // Subpaths: vertex 0 is the camera (light), then the surfaces the walk scattered at. Return the
   // number of vertices.
+  // maxVertices < 0: the most maxdepth allows.
   int cameraSubpath(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
-                    PathVertex* path) const;
-  int lightSubpath(const Scene& scene, IntegratorContext& ctx, Float time, PathVertex* path) const;
+                    PathVertex* path, int maxVertices = -1) const;
+  int lightSubpath(const Scene& scene, IntegratorContext& ctx, Float time, PathVertex* path,
+                   int maxVertices = -1) const;
   int randomWalk(RayDifferential ray, Spectrum beta, Float pdfDir, bool fromCamera,
                  const Scene& scene, IntegratorContext& ctx, PathVertex* path,
                  int maxVertices) const;

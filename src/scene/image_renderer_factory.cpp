@@ -1,4 +1,5 @@
 // Integrator / Renderer statements that select a whole-image renderer.
+#include "scene/metropolis_params.h"
 #include "scene/plugin_factories.h"
 #include "scene/sppm_factory.h"
 
@@ -8,8 +9,8 @@ std::unique_ptr<ImageRenderer> createImageRenderer(const PluginDesc& integrator,
                                                    const PluginDesc& renderer,
                                                    const ImageRendererContext& context) {
   if (integrator.name == "sppm") return createSppmRenderer(integrator, context);
-  (void)renderer;
-  (void)context;
+  if (integrator.name == "mlt") return createMltRenderer(integrator, context);
+  if (renderer.name == "metropolis") return createMetropolisRenderer(renderer, context);
   return nullptr;
 }
 

@@ -42,9 +42,9 @@ struct ImageRendererContext {
   const Sampler* sampler = nullptr;  // its samples per pixel (after --spp and --quick)
   uint64_t seed = 0;
   bool quick = false;
-  Bounds2i pixelBounds;                                          // the film's (crop window applied)
+  int sppOverride = 0;   // --spp (0: none), for renderers whose sample count is a parameter
+  Bounds2i pixelBounds;  // the film's (crop window applied)
   std::function<void(const FileLoc&, const std::string&)> warn;  // may be empty
-  int sppOverride = 0;  // the command line's --spp; 0: none
 };
 
 // The whole-image renderer that an Integrator statement (pbrt-v3: "sppm", "mlt") or a Renderer

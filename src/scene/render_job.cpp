@@ -230,9 +230,9 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
       integratorDesc.params =
           withInt(integratorDesc.params, "nlights", std::max(1, nLights / 4), integratorDesc.loc);
   }
-  ImageRendererContext irc{job.camera.get(), job.sampler.get(),       options.seed,
-                           options.quick,    job.film->pixelBounds(), warn};
-  irc.sppOverride = options.sppOverride;
+  ImageRendererContext irc{
+      job.camera.get(),    job.sampler.get(),       options.seed, options.quick,
+      options.sppOverride, job.film->pixelBounds(), warn};
   job.imageRenderer = createImageRenderer(integratorDesc, desc.renderer, irc);
   if (job.imageRenderer) {
     reportUnused(desc.renderer, warn);
