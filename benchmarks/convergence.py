@@ -45,12 +45,15 @@ INTEGRATORS = {"path": '"path" "integer maxdepth" [100]',
                "photonmap": '"photonmap" "float maxdist" [{maxdist}]',
                "irradiancecache": '"irradiancecache"',
                "igi": '"igi"',
-               "sppm": '"sppm" "integer maxdepth" [100] "float radius" [{radius}]'}
+               "sppm": '"sppm" "integer maxdepth" [100] "float radius" [{radius}]',
+               # Its bootstrap takes bootstrapsamples x (maxdepth + 1) paths: depth 8, so it
+               # leaves out light of more than 8 bounces that the reference has.
+               "mlt": '"mlt" "integer maxdepth" [8]'}
 SPPM_RADIUS = {"cornell-box": 8, "caustic": 0.2, "indirect-room": 0.2, "spheres": 0.2}
 SAMPLERS = {"stratified": '"stratified"', "random": '"random"'}
 DEFAULT_METHODS = ["path/stratified", "path/random", "directlighting/stratified",
                    "bdpt/stratified", "photonmap/stratified", "irradiancecache/stratified",
-                   "igi/stratified", "sppm/stratified"]
+                   "igi/stratified", "sppm/stratified", "mlt/stratified"]
 
 
 def integrator_statement(integrator, scene):
