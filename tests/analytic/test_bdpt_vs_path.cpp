@@ -1,16 +1,21 @@
-// Bidirectional and unidirectional path tracing estimate the same image: on the Cornell box
-// (maxdepth 5 for both), the mean luminance of each of 16 regions (a 4 x 4 grid over the image)
+// Bidirectional and unidirectional path tracing estimate the same image: on the Cornell box, the
+// caustic scene and the indirectly lit room of scenes/ (the same maxdepth for both), the mean
+// luminance of each of 16 regions (a 4 x 4 grid over the image)
 // agrees between "bdpt" and "path". Each side renders independent replicates (seeds 1..n); a
 // region's statistic is the Welch z of the two replicate means. Per region significance: Šidák
 // 0.01 over the 16 regions under the normal approximation (with 32 replicates, 31 degrees of
 // freedom per side, the Student tails make the family-wise level about 0.03). Fixed seeds. The
 // normal suite's case: 16 x 16, 32 replicates of 8 spp; the Long one: 64 x 64, 64 of 64 spp.
+// Metropolis (pbrt-v3's "mlt") is held to the same test in test_mlt_vs_path.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "support/render_scene.h"
 #include "support/tail_probabilities.h"
@@ -20,6 +25,29 @@ namespace {
 
 std::string cornellBox(const std::string& integrator, int res, const std::string& extra = "") {
   return test::cornellBoxText(res, integrator, extra);
+}
+
+// scenes/NAME/NAME.pbrt at res x res with its integrator statement replaced, and `replace`
+// applied (from, to) once each.
+std::string exampleScene(const std::string& name, const std::string& integrator, int res,
+                         const std::vector<std::pair<std::string, std::string>>& replace = {}) {
+  std::ifstream in(std::string(CANDELA_SOURCE_DIR) + "/scenes/" + name + "/" + name + ".pbrt");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string s = ss.str();
+  std::string r = "[";
+  r.append(std::to_string(res)).append("]");
+  std::vector<std::pair<std::string, std::string>> all = {
+      {"[256]", r},
+      {"[256]", r},
+      {"SurfaceIntegrator \"path\" \"integer maxdepth\" [8]", integrator}};
+  all.insert(all.end(), replace.begin(), replace.end());
+  for (const auto& [from, to] : all) {
+    size_t at = s.find(from);
+    if (at == std::string::npos) throw std::logic_error(name + ".pbrt has no '" + from + "'");
+    s.replace(at, from.size(), to);
+  }
+  return s;
 }
 
 constexpr int kRegions = 4;
@@ -49,13 +77,15 @@ RegionStats replicates(const std::string& scene, int kReplicates, int kRegionSiz
   return st;
 }
 
-void expectRegionsAgree(int res, int replicateCount, int spp, const std::string& extra = "") {
+// scene(integrator statement) -> scene text.
+template <typename SceneOf>
+void expectRegionsAgree(const SceneOf& scene, int res, int replicateCount, int spp,
+                        int maxDepth = 5) {
   int regionSize = res / kRegions;
-  RegionStats b = replicates(cornellBox("Integrator \"bdpt\" \"integer maxdepth\" [5]", res, extra),
-                             replicateCount, regionSize, spp);
+  std::string depth = " \"integer maxdepth\" [" + std::to_string(maxDepth) + "]";
+  RegionStats b = replicates(scene("Integrator \"bdpt\"" + depth), replicateCount, regionSize, spp);
   RegionStats p =
-      replicates(cornellBox("SurfaceIntegrator \"path\" \"integer maxdepth\" [5]", res, extra),
-                 replicateCount, regionSize, spp);
+      replicates(scene("SurfaceIntegrator \"path\"" + depth), replicateCount, regionSize, spp);
   const double n = replicateCount;
   for (int k = 0; k < kRegions * kRegions; ++k) {
     double mb = b.sum[k] / n, mp = p.sum[k] / n;
@@ -66,7 +96,30 @@ void expectRegionsAgree(int res, int replicateCount, int spp, const std::string&
   }
 }
 
-TEST(BdptVsPath, CornellBoxRegionsAgree) { expectRegionsAgree(16, 32, 8); }
+auto cornell(int res, const std::string& extra = "") {
+  return [=](const std::string& integrator) { return cornellBox(integrator, res, extra); };
+}
+
+TEST(BdptVsPath, CornellBoxRegionsAgree) { expectRegionsAgree(cornell(16), 16, 32, 8); }
+
+// The room behind the doorway: all of it indirect light, at depth 8.
+TEST(BdptVsPath, IndirectRoomRegionsAgree) {
+  expectRegionsAgree(
+      [](const std::string& integrator) { return exampleScene("indirect-room", integrator, 16); },
+      16, 32, 8, 8);
+}
+
+// The caustic scene with its light grown from radius 0.08 to 0.4 (and dimmed to keep its
+// power), so that path tracing finds the caustic through the glass often enough for its
+// replicate variance to be estimated; the Long case keeps the scene's small light.
+TEST(BdptVsPath, CausticRegionsAgree) {
+  expectRegionsAgree(
+      [](const std::string& integrator) {
+        return exampleScene("caustic", integrator, 16,
+                            {{"[0.08]", "[0.4]"}, {"[2500 2300 2000]", "[100 92 80]"}});
+      },
+      16, 32, 16, 8);
+}
 
 // Shading normals that differ from the geometric ones: light paths carry importance, whose
 // adjoint BSDF needs the shading-normal correction (pbrt 3e §16.1.3). A floor patch whose vertex
@@ -78,11 +131,17 @@ const char* kLeaningShadingNormals =
     "  \"normal N\" [0.5 0.866 0  0.5 0.866 0  0.5 0.866 0  0.5 0.866 0]\nAttributeEnd\n";
 
 TEST(BdptVsPath, ShadingNormalsRegionsAgree) {
-  expectRegionsAgree(16, 32, 8, kLeaningShadingNormals);
+  expectRegionsAgree(cornell(16, kLeaningShadingNormals), 16, 32, 8);
 }
 
 // The same at 64 x 64 with 64 replicates of 64 spp each: standard errors about 8x smaller.
-TEST(LongBdptVsPath, CornellBoxRegionsAgree) { expectRegionsAgree(64, 64, 64); }
+TEST(LongBdptVsPath, CornellBoxRegionsAgree) { expectRegionsAgree(cornell(64), 64, 64, 64); }
+
+TEST(LongBdptVsPath, CausticWithItsSmallLightRegionsAgree) {
+  expectRegionsAgree(
+      [](const std::string& integrator) { return exampleScene("caustic", integrator, 32); }, 32, 64,
+      256, 8);
+}
 
 }  // namespace
 }  // namespace candela
