@@ -88,12 +88,19 @@ def time_to(rows, target):
 
 
 def error_at(rows, seconds):
+    """relMSE at `seconds`, interpolated log-log; None when the first pass ended later."""
+    if not rows or seconds < rows[0]["seconds"]:
+        return None
     pts = [(math.log(r["seconds"]), math.log(r["relmse"])) for r in rows if r["seconds"] > 0]
     for (x0, y0), (x1, y1) in zip(pts, pts[1:]):
         if x0 <= math.log(seconds) <= x1:
             t = (math.log(seconds) - x0) / (x1 - x0) if x1 != x0 else 0
             return math.exp(y0 + t * (y1 - y0))
     return rows[-1]["relmse"] if rows else None
+
+
+def fmt(value):
+    return "-" if value is None else f"{value:.3g}"
 
 
 def main():
@@ -163,7 +170,7 @@ def main():
                           "t_relmse_1e-2_s": f"{t2:.3f}" if t2 else "-",
                           "t_relmse_1e-3_s": f"{t3:.3f}" if t3 else "-",
                           "equal_time_s": f"{equal_time:.3f}",
-                          "relmse_at_equal_time": f"{error_at(rows, equal_time):.3g}",
+                          "relmse_at_equal_time": fmt(error_at(rows, equal_time)),
                           "final_spp": int(rows[-1]["spp"]),
                           "final_relmse": f"{rows[-1]['relmse']:.3g}"})
         subprocess.run([os.path.join(ROOT, "tools", "plot_convergence.py"),
