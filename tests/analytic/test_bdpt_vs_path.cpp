@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
+#include "support/region_agreement.h"
 #include "support/render_scene.h"
-#include "support/tail_probabilities.h"
 
 namespace candela {
 namespace {
@@ -50,63 +50,29 @@ std::string exampleScene(const std::string& name, const std::string& integrator,
   return s;
 }
 
-constexpr int kRegions = 4;
-
-struct RegionStats {
-  double sum[kRegions * kRegions] = {}, sumSq[kRegions * kRegions] = {};
-};
-
-RegionStats replicates(const std::string& scene, int kReplicates, int kRegionSize, int spp) {
-  RegionStats st;
-  for (int rep = 0; rep < kReplicates; ++rep) {
-    test::TestRenderOptions o;
-    o.build.sppOverride = spp;
-    o.build.seed = uint64_t(rep + 1);
-    auto r = test::renderSceneText(scene, o);
-    for (int ry = 0; ry < kRegions; ++ry)
-      for (int rx = 0; rx < kRegions; ++rx) {
-        double m = 0;
-        for (int y = 0; y < kRegionSize; ++y)
-          for (int x = 0; x < kRegionSize; ++x)
-            m += r.film().pixelValue(Point2i(rx * kRegionSize + x, ry * kRegionSize + y)).y();
-        m /= kRegionSize * kRegionSize;
-        st.sum[ry * kRegions + rx] += m;
-        st.sumSq[ry * kRegions + rx] += m * m;
-      }
-  }
-  return st;
-}
-
 // scene(integrator statement) -> scene text.
 template <typename SceneOf>
-void expectRegionsAgree(const SceneOf& scene, int res, int replicateCount, int spp,
-                        int maxDepth = 5) {
-  int regionSize = res / kRegions;
+void expectRegionsAgree(const SceneOf& scene, int replicateCount, int spp, int maxDepth = 5) {
   std::string depth = " \"integer maxdepth\" [" + std::to_string(maxDepth) + "]";
-  RegionStats b = replicates(scene("Integrator \"bdpt\"" + depth), replicateCount, regionSize, spp);
-  RegionStats p =
-      replicates(scene("SurfaceIntegrator \"path\"" + depth), replicateCount, regionSize, spp);
-  const double n = replicateCount;
-  for (int k = 0; k < kRegions * kRegions; ++k) {
-    double mb = b.sum[k] / n, mp = p.sum[k] / n;
-    double vb = (b.sumSq[k] - n * mb * mb) / (n - 1), vp = (p.sumSq[k] - n * mp * mp) / (n - 1);
-    double z = (mb - mp) / std::sqrt(vb / n + vp / n);
-    EXPECT_GT(stats::normalTwoSidedTail(z), stats::sidak(0.01, kRegions * kRegions))
-        << "region " << k << ": bdpt " << mb << ", path " << mp << ", z " << z;
-  }
+  test::expectRegionsAgree(
+      test::renderRegionReplicates(scene("Integrator \"bdpt\"" + depth), replicateCount, spp),
+      "bdpt",
+      test::renderRegionReplicates(scene("SurfaceIntegrator \"path\"" + depth), replicateCount,
+                                   spp),
+      "path");
 }
 
 auto cornell(int res, const std::string& extra = "") {
   return [=](const std::string& integrator) { return cornellBox(integrator, res, extra); };
 }
 
-TEST(BdptVsPath, CornellBoxRegionsAgree) { expectRegionsAgree(cornell(16), 16, 32, 8); }
+TEST(BdptVsPath, CornellBoxRegionsAgree) { expectRegionsAgree(cornell(16), 32, 8); }
 
 // The room behind the doorway: all of it indirect light, at depth 8.
 TEST(BdptVsPath, IndirectRoomRegionsAgree) {
   expectRegionsAgree(
       [](const std::string& integrator) { return exampleScene("indirect-room", integrator, 16); },
-      16, 32, 8, 8);
+      32, 8, 8);
 }
 
 // The caustic scene with its light grown from radius 0.08 to 0.4 (and dimmed to keep its
@@ -121,7 +87,7 @@ TEST(BdptVsPath, CausticRegionsAgree) {
         return exampleScene("caustic", integrator, 16,
                             {{"[0.08]", "[0.4]"}, {"[2500 2300 2000]", "[100 92 80]"}});
       },
-      16, 32, 16, 8);
+      32, 16, 8);
 }
 
 // Shading normals that differ from the geometric ones: light paths carry importance, whose
@@ -134,11 +100,11 @@ const char* kLeaningShadingNormals =
     "  \"normal N\" [0.5 0.866 0  0.5 0.866 0  0.5 0.866 0  0.5 0.866 0]\nAttributeEnd\n";
 
 TEST(BdptVsPath, ShadingNormalsRegionsAgree) {
-  expectRegionsAgree(cornell(16, kLeaningShadingNormals), 16, 32, 8);
+  expectRegionsAgree(cornell(16, kLeaningShadingNormals), 32, 8);
 }
 
 // The same at 64 x 64 with 64 replicates of 64 spp each: standard errors about 8x smaller.
-TEST(LongBdptVsPath, CornellBoxRegionsAgree) { expectRegionsAgree(cornell(64), 64, 64, 64); }
+TEST(LongBdptVsPath, CornellBoxRegionsAgree) { expectRegionsAgree(cornell(64), 64, 64); }
 
 }  // namespace
 }  // namespace candela

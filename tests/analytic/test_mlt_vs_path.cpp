@@ -9,77 +9,22 @@
 // spp); the Long one: 32 x 32, 64 replicates of 64.
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "support/region_agreement.h"
 #include "support/render_scene.h"
-#include "support/tail_probabilities.h"
 
 namespace candela {
 namespace {
 
-std::string cornellBox(const std::string& transport, int res) {
-  std::ifstream in(std::string(CANDELA_SOURCE_DIR) + "/scenes/cornell-box/cornell-box.pbrt");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string s = ss.str();
-  auto replace = [&](const std::string& from, const std::string& to) {
-    size_t at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) s.replace(at, from.size(), to);
-  };
-  std::string r = "[";
-  r.append(std::to_string(res)).append("]");
-  replace("[256]", r);
-  replace("[256]", r);
-  replace("SurfaceIntegrator \"path\" \"integer maxdepth\" [5]", transport);
-  return s;
-}
-
-constexpr int kRegions = 4;
-
-struct RegionStats {
-  double sum[kRegions * kRegions] = {}, sumSq[kRegions * kRegions] = {};
-};
-
-// spp is --spp: the path tracer's samples and the Metropolis renderers' mutations per pixel.
-RegionStats replicates(const std::string& scene, int count, int regionSize, int spp) {
-  RegionStats st;
-  for (int rep = 0; rep < count; ++rep) {
-    test::TestRenderOptions o;
-    o.build.sppOverride = spp;
-    o.build.seed = uint64_t(rep + 1);
-    auto r = test::renderSceneText(scene, o);
-    for (int ry = 0; ry < kRegions; ++ry)
-      for (int rx = 0; rx < kRegions; ++rx) {
-        double m = 0;
-        for (int y = 0; y < regionSize; ++y)
-          for (int x = 0; x < regionSize; ++x)
-            m += r.film().pixelValue(Point2i(rx * regionSize + x, ry * regionSize + y)).y();
-        m /= regionSize * regionSize;
-        st.sum[ry * kRegions + rx] += m;
-        st.sumSq[ry * kRegions + rx] += m * m;
-      }
-  }
-  return st;
-}
-
 void expectRegionsAgree(const std::string& transport, int res, int count, int spp) {
   SCOPED_TRACE(transport);
-  int regionSize = res / kRegions;
-  RegionStats m = replicates(cornellBox(transport, res), count, regionSize, spp);
-  RegionStats p = replicates(cornellBox("SurfaceIntegrator \"path\" \"integer maxdepth\" [5]", res),
-                             count, regionSize, spp);
-  const double n = count;
-  for (int k = 0; k < kRegions * kRegions; ++k) {
-    double mm = m.sum[k] / n, mp = p.sum[k] / n;
-    double vm = (m.sumSq[k] - n * mm * mm) / (n - 1), vp = (p.sumSq[k] - n * mp * mp) / (n - 1);
-    double z = (mm - mp) / std::sqrt(vm / n + vp / n);
-    EXPECT_GT(stats::normalTwoSidedTail(z), stats::sidak(0.01, kRegions * kRegions))
-        << "region " << k << ": metropolis " << mm << ", path " << mp << ", z " << z;
-  }
+  test::expectRegionsAgree(
+      test::renderRegionReplicates(test::cornellBoxText(res, transport), count, spp), "metropolis",
+      test::renderRegionReplicates(
+          test::cornellBoxText(res, "SurfaceIntegrator \"path\" \"integer maxdepth\" [5]"), count,
+          spp),
+      "path");
 }
 
 // Bootstrap and chain counts scaled to the image: 16 x 16 pixels need far fewer than the
