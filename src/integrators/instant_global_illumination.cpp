@@ -71,23 +71,12 @@ Spectrum InstantGlobalIlluminationIntegrator::scatter(SurfaceInteraction& isect,
   l += gatherVirtualLights(isect, *bsdf, scene, ctx, set);
   if (depth < params_.maxDepth) l += compensateBound(isect, *bsdf, scene, ctx, set, depth);
 
-  if (depth + 1 < params_.maxDepth) {
-    // Perfect specular reflection and transmission, one deterministic direction each (pbrt 2e
-    // §1.3.6). What the mirror shows is seen, emission included, whatever ray arrived here.
-    for (bool transmission : {false, true}) {
-      int flags = kSpecular | (transmission ? kTransmission : kReflection);
-      Vector3f wi;
-      Float pdf;
-      Spectrum f =
-          bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf, flags);
-      Float cosTerm = absDot(wi, bsdf->shadingNormal());
-      if (pdf > 0 && !f.isBlack() && cosTerm != 0) {
-        Float a;
-        RayDifferential next = spawnSpecularRay(isect, *bsdf, ray, wi, transmission);
-        l += f * trace(next, scene, ctx, set, depth + 1, true, &a) * (cosTerm / pdf);
-      }
-    }
-  }
+  // What the mirror shows is seen, emission included, whatever ray arrived here.
+  if (depth + 1 < params_.maxDepth)
+    l += specularlyScattered(isect, *bsdf, ray, ctx.sampler, [&](const RayDifferential& next) {
+      Float a;
+      return trace(next, scene, ctx, set, depth + 1, true, &a);
+    });
   return l;
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/interaction.h"
 #include "reflection/bsdf.h"
+#include "samplers/sampler.h"
 
 namespace candela {
 
@@ -22,5 +23,26 @@ RayDifferential spawnSpecularRay(const SurfaceInteraction& isect, const BSDF& bs
 // clips.
 RayDifferential continueThrough(const SurfaceInteraction& isect, const RayDifferential& ray,
                                 Float tMax);
+
+// Light arriving by perfect specular reflection, then transmission, at isect toward isect.wo:
+// each is one deterministic direction, so one sample of each gives the exact recursive term
+// (pbrt 2e §1.3.6). radiance(ray) is the radiance along the spawned ray (with differentials).
+template <typename Radiance>
+Spectrum specularlyScattered(const SurfaceInteraction& isect, const BSDF& bsdf,
+                             const RayDifferential& incoming, Sampler& sampler,
+                             const Radiance& radiance) {
+  Spectrum l(0);
+  for (bool transmission : {false, true}) {
+    int flags = kSpecular | (transmission ? kTransmission : kReflection);
+    Vector3f wi;
+    Float pdf;
+    Spectrum f = bsdf.sampleF(isect.wo, &wi, sampler.get1D(), sampler.get2D(), &pdf, flags);
+    Float cosTerm = absDot(wi, bsdf.shadingNormal());
+    if (pdf > 0 && !f.isBlack() && cosTerm != 0)
+      l +=
+          f * radiance(spawnSpecularRay(isect, bsdf, incoming, wi, transmission)) * (cosTerm / pdf);
+  }
+  return l;
+}
 
 }  // namespace candela

@@ -41,23 +41,11 @@ Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Sc
   const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
   l += term ? (*term)(isect, *bsdf, ctx) : directLight(isect, *bsdf, scene, ctx);
 
-  if (depth + 1 < maxDepth_) {
-    // Perfect specular reflection, then transmission: each is one deterministic direction, so
-    // one sample of each gives the exact recursive term (pbrt 2e §1.3.6).
-    for (bool transmission : {false, true}) {
-      int flags = kSpecular | (transmission ? kTransmission : kReflection);
-      Vector3f wi;
-      Float pdf;
-      Spectrum f =
-          bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf, flags);
-      Float cosTerm = absDot(wi, bsdf->shadingNormal());
-      if (pdf > 0 && !f.isBlack() && cosTerm != 0) {
-        Float a;
-        RayDifferential next = spawnSpecularRay(isect, *bsdf, ray, wi, transmission);
-        l += f * trace(next, scene, ctx, depth + 1, &a, term) * (cosTerm / pdf);
-      }
-    }
-  }
+  if (depth + 1 < maxDepth_)
+    l += specularlyScattered(isect, *bsdf, ray, ctx.sampler, [&](const RayDifferential& next) {
+      Float a;
+      return trace(next, scene, ctx, depth + 1, &a, term);
+    });
   return l;
 }
 
