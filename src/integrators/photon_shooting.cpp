@@ -11,6 +11,7 @@
 #include "core/progress.h"
 #include "core/rng.h"
 #include "core/sampling.h"
+#include "integrators/light_paths.h"
 #include "integrators/specular_differentials.h"
 #include "materials/material.h"
 #include "samplers/radical_inverse.h"
@@ -74,24 +75,12 @@ class PhotonTracer {
     }
     RNG rng(hashValues({plan_.seed, index}));
 
-    Float lightPmf;
-    int li = lights_.sampleDiscrete(u[0], &lightPmf);
-    if (lightPmf == 0) return;
-    const Light& light = *scene_.lights()[li];
-    Ray lightRay;
-    Normal3f nLight;
-    Float pdfPos, pdfDir;
     Float time = plan_.shutterOpen + u[8] * (plan_.shutterClose - plan_.shutterOpen);
-    Spectrum le = light.sampleLe(Point2f(u[1], u[2]), Point2f(u[3], u[4]), time, &lightRay, &nLight,
-                                 &pdfPos, &pdfDir);
-    if (le.isBlack() || pdfPos == 0 || pdfDir == 0) return;
-    // Path weight of the emitted particle, pbrt 2e eq. 15.16; lights whose "normal" is zero (none
-    // of candela's) would have no cosine.
-    Float cosTheta = nLight == Normal3f(0, 0, 0) ? 1 : absDot(nLight, normalize(lightRay.d));
-    Spectrum alpha = le * (cosTheta / (lightPmf * pdfPos * pdfDir));
-    if (alpha.isBlack() || !alpha.isFinite()) return;
-
-    RayDifferential ray(lightRay);
+    std::optional<LightPathStart> start =
+        startLightPath(scene_, lights_, u[0], Point2f(u[1], u[2]), Point2f(u[3], u[4]), time);
+    if (!start) return;
+    Spectrum alpha = start->beta;
+    RayDifferential ray(start->ray);
     bool specularPath = true;
     for (int nIntersections = 0;;) {
       SurfaceInteraction isect;
@@ -175,12 +164,9 @@ struct MapFill {
 
 PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& plan) {
   PhotonShootingResult result;
-  std::vector<Float> power;
-  for (const Light* l : scene.lights()) power.push_back(std::max(Float(0), l->power().y()));
-  Float totalPower = 0;
-  for (Float p : power) totalPower += p;
-  if (power.empty() || !(totalPower > 0)) return result;
-  Distribution1D lights(power);
+  std::optional<Distribution1D> lightChoice = lightPowerDistribution(scene);
+  if (!lightChoice) return result;
+  const Distribution1D& lights = *lightChoice;
 
   const int d = int(PhotonKind::Direct), c = int(PhotonKind::Caustic),
             in = int(PhotonKind::Indirect);

@@ -6,6 +6,7 @@
 #include "core/memory.h"
 #include "core/rng.h"
 #include "core/sampling.h"
+#include "integrators/light_paths.h"
 #include "integrators/specular_differentials.h"
 #include "materials/material.h"
 #include "reflection/bsdf.h"
@@ -31,31 +32,16 @@ std::array<Float, 5> pathStart(uint32_t index) {
   return u;
 }
 
-Distribution1D lightPowerDistribution(const Scene& scene) {
-  std::vector<Float> power;
-  for (const Light* light : scene.lights()) power.push_back(std::max(Float(0), light->power().y()));
-  return Distribution1D(std::move(power));
-}
-
 void traceOnePath(const Scene& scene, const Distribution1D& lightChoice, uint32_t set,
                   uint32_t path, uint32_t index, MemoryArena& arena, RayStats& stats,
                   std::vector<VirtualPointLight>* out) {
   std::array<Float, 5> u = pathStart(index);
   RNG rng(hashValues({0x766c70617468ULL, set, path}));
-  Float lightPmf;
-  int lightIndex = lightChoice.sampleDiscrete(u[0], &lightPmf);
-  if (lightPmf == 0) return;
-  const Light& light = *scene.lights()[lightIndex];
-  Ray start;
-  Normal3f nLight;
-  Float pdfPos, pdfDir;
-  Spectrum le = light.sampleLe(Point2f(u[1], u[2]), Point2f(u[3], u[4]), 0, &start, &nLight,
-                               &pdfPos, &pdfDir);
-  if (pdfPos == 0 || pdfDir == 0 || le.isBlack()) return;
-  // The flux the path carries: the emission cosine belongs in it (pbrt-v2's code has it, the
-  // book's text leaves it out); a point light reports its direction as nLight, so cos = 1.
-  Spectrum alpha = le * (absDot(nLight, normalize(start.d)) / (lightPmf * pdfPos * pdfDir));
-  RayDifferential ray(start);
+  std::optional<LightPathStart> start =
+      startLightPath(scene, lightChoice, u[0], Point2f(u[1], u[2]), Point2f(u[3], u[4]), 0);
+  if (!start) return;
+  Spectrum alpha = start->beta;
+  RayDifferential ray(start->ray);
   const int nonSpecularReflection = kReflection | kDiffuse | kGlossy;
   for (int vertex = 0; vertex < kMaxPathVertices; ++vertex) {
     SurfaceInteraction isect;
@@ -118,8 +104,8 @@ VirtualPointLightSets traceVirtualPointLights(const Scene& scene, int nSets, int
   result.pathsPerSet = pathsPerSet;
   result.sets.resize(size_t(nSets));
   if (scene.lights().empty()) return result;
-  Distribution1D lightChoice = lightPowerDistribution(scene);
-  if (lightChoice.integral() == 0) return result;
+  std::optional<Distribution1D> lightChoice = lightPowerDistribution(scene);
+  if (!lightChoice) return result;
   // One thread, in index order: a few thousand short paths take milliseconds, and the order
   // makes the sets the same on every run.
   MemoryArena arena;
@@ -127,7 +113,7 @@ VirtualPointLightSets traceVirtualPointLights(const Scene& scene, int nSets, int
   for (int s = 0; s < nSets; ++s)
     for (int i = 0; i < pathsPerSet; ++i) {
       uint32_t index = uint32_t(s) * uint32_t(pathsPerSet) + uint32_t(i);
-      traceOnePath(scene, lightChoice, uint32_t(s), uint32_t(i), index, arena, stats,
+      traceOnePath(scene, *lightChoice, uint32_t(s), uint32_t(i), index, arena, stats,
                    &result.sets[size_t(s)]);
       arena.reset();
     }

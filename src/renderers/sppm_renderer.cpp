@@ -16,6 +16,7 @@
 #include "core/progress.h"
 #include "core/rng.h"
 #include "core/sampling.h"
+#include "integrators/light_paths.h"
 #include "integrators/light_sampling.h"
 #include "integrators/specular_differentials.h"
 #include "materials/material.h"
@@ -75,13 +76,11 @@ class SppmIteration {
  public:
   SppmIteration(const Scene& scene, const Camera& camera, const SppmSettings& s,
                 std::vector<PixelState>& pixels)
-      : scene_(scene), camera_(camera), s_(s), pixels_(pixels) {
-    std::vector<Float> power;
-    for (const Light* l : scene.lights()) power.push_back(std::max(Float(0), l->power().y()));
-    Float total = 0;
-    for (Float p : power) total += p;
-    if (total > 0) lights_ = std::make_unique<Distribution1D>(power);
-  }
+      : scene_(scene),
+        camera_(camera),
+        s_(s),
+        pixels_(pixels),
+        lights_(lightPowerDistribution(scene)) {}
 
   // The camera path of one pixel in iteration k: emission and direct light into ld, and the
   // visible point (pbrt 3e §16.2.2).
@@ -174,21 +173,12 @@ class SppmIteration {
     std::array<Float, kPhotonDims> u;
     for (int d = 0; d < kPhotonDims; ++d) u[d] = rotatedHalton(g, d, rotated[d]);
     RNG rng(hashValues({s_.seed, kPhotonTag, g}));
-    Float lightPmf;
-    int li = lights_->sampleDiscrete(u[0], &lightPmf);
-    if (lightPmf == 0) return;
-    const Light& light = *scene_.lights()[li];
-    Ray lightRay;
-    Normal3f nLight;
-    Float pdfPos, pdfDir;
     Float time = shutterOpen + u[5] * (shutterClose - shutterOpen);
-    Spectrum le = light.sampleLe(Point2f(u[1], u[2]), Point2f(u[3], u[4]), time, &lightRay, &nLight,
-                                 &pdfPos, &pdfDir);
-    if (le.isBlack() || pdfPos == 0 || pdfDir == 0) return;
-    Float cosTheta = nLight == Normal3f(0, 0, 0) ? 1 : absDot(nLight, normalize(lightRay.d));
-    Spectrum beta = le * (cosTheta / (lightPmf * pdfPos * pdfDir));
-    if (beta.isBlack() || !beta.isFinite()) return;
-    RayDifferential ray(lightRay);
+    std::optional<LightPathStart> start =
+        startLightPath(scene_, *lights_, u[0], Point2f(u[1], u[2]), Point2f(u[3], u[4]), time);
+    if (!start) return;
+    Spectrum beta = start->beta;
+    RayDifferential ray(start->ray);
     for (int depth = 0; depth < s_.maxDepth;) {
       SurfaceInteraction isect;
       Float tMax = ray.tMax;
@@ -241,7 +231,7 @@ class SppmIteration {
   const Camera& camera_;
   const SppmSettings& s_;
   std::vector<PixelState>& pixels_;
-  std::unique_ptr<Distribution1D> lights_;
+  std::optional<Distribution1D> lights_;  // none when no light emits
 };
 
 }  // namespace
