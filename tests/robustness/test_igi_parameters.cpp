@@ -6,40 +6,22 @@
 
 #include "core/error.h"
 #include "integrators/instant_global_illumination.h"
+#include "support/parameter_errors.h"
 #include "support/render_scene.h"
 
 namespace candela {
 namespace {
 
-// The integrator's parameter sits alone on line 3 of the file.
 std::string sceneWith(const std::string& parameter) {
-  return "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n"
-         "SurfaceIntegrator \"igi\"\n"
-         "  " +
-         parameter +
-         "\n"
-         "WorldBegin\n"
-         "LightSource \"point\" \"point from\" [0 0 -1]\n"
-         "Shape \"sphere\" \"float radius\" [0.5]\n"
-         "WorldEnd\n";
+  return test::parameterScene("SurfaceIntegrator \"igi\"", parameter);
 }
 
 TEST(IgiParameters, EveryBadValueIsALocatedSceneError) {
-  for (const char* bad :
-       {"\"integer nlights\" [0]", "\"integer nlights\" [-3]", "\"integer nsets\" [0]",
-        "\"float glimit\" [0]", "\"float glimit\" [-1]", "\"integer gathersamples\" [-1]",
-        "\"float rrthreshold\" [-0.5]", "\"integer maxdepth\" [-1]"}) {
-    SCOPED_TRACE(bad);
-    std::string name = std::string(bad).substr(std::string(bad).find(' ') + 1);
-    name = name.substr(0, name.find('"'));
-    try {
-      test::buildSceneText(sceneWith(bad));
-      ADD_FAILURE() << "no error";
-    } catch (const SceneError& e) {
-      EXPECT_EQ(e.location().line, 3) << e.what();
-      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    }
-  }
+  test::expectParameterErrorsLocated(
+      "SurfaceIntegrator \"igi\"",
+      {"\"integer nlights\" [0]", "\"integer nlights\" [-3]", "\"integer nsets\" [0]",
+       "\"float glimit\" [0]", "\"float glimit\" [-1]", "\"integer gathersamples\" [-1]",
+       "\"float rrthreshold\" [-0.5]", "\"integer maxdepth\" [-1]"});
 }
 
 TEST(IgiParameters, GoodValuesBuildAndUnknownNamesAreReported) {

@@ -5,39 +5,18 @@
 #include <string>
 
 #include "core/error.h"
+#include "support/parameter_errors.h"
 #include "support/render_scene.h"
 
 namespace candela {
 namespace {
 
-// The statement's parameter sits alone on line 3 of the file.
 std::string sceneWith(const std::string& statement, const std::string& parameter) {
-  return "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n" + statement +
-         "\n  " + parameter +
-         "\n"
-         "WorldBegin\n"
-         "LightSource \"point\" \"point from\" [0 0 -1]\n"
-         "Shape \"sphere\" \"float radius\" [0.5]\n"
-         "WorldEnd\n";
-}
-
-void expectLocatedErrors(const std::string& statement, std::initializer_list<const char*> bad) {
-  for (const char* b : bad) {
-    SCOPED_TRACE(statement + " " + b);
-    std::string name = std::string(b).substr(std::string(b).find(' ') + 1);
-    name = name.substr(0, name.find('"'));
-    try {
-      test::buildSceneText(sceneWith(statement, b));
-      ADD_FAILURE() << "no error";
-    } catch (const SceneError& e) {
-      EXPECT_EQ(e.location().line, 3) << e.what();
-      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    }
-  }
+  return test::parameterScene(statement, parameter);
 }
 
 TEST(MltParameters, EveryBadValueIsALocatedSceneError) {
-  expectLocatedErrors(
+  test::expectParameterErrorsLocated(
       "Integrator \"mlt\"",
       {"\"integer maxdepth\" [-1]", "\"integer bootstrapsamples\" [0]",
        "\"integer bootstrapsamples\" [-5]", "\"integer chains\" [0]", "\"integer chains\" [-2]",
@@ -47,7 +26,7 @@ TEST(MltParameters, EveryBadValueIsALocatedSceneError) {
 }
 
 TEST(MetropolisParameters, EveryBadValueIsALocatedSceneError) {
-  expectLocatedErrors(
+  test::expectParameterErrorsLocated(
       "Renderer \"metropolis\"",
       {"\"integer maxdepth\" [-1]", "\"integer bootstrapsamples\" [0]",
        "\"integer samplesperpixel\" [-3]", "\"integer directsamples\" [0]",

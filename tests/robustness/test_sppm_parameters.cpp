@@ -6,40 +6,22 @@
 
 #include "core/error.h"
 #include "renderers/sppm_renderer.h"
+#include "support/parameter_errors.h"
 #include "support/render_scene.h"
 
 namespace candela {
 namespace {
 
-// The integrator's parameter sits alone on line 3 of the file.
 std::string sceneWith(const std::string& parameter) {
-  return "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n"
-         "Integrator \"sppm\"\n"
-         "  " +
-         parameter +
-         "\n"
-         "WorldBegin\n"
-         "LightSource \"point\" \"point from\" [0 0 -1]\n"
-         "Shape \"sphere\" \"float radius\" [0.5]\n"
-         "WorldEnd\n";
+  return test::parameterScene("Integrator \"sppm\"", parameter);
 }
 
 TEST(SppmParameters, EveryBadValueIsALocatedSceneError) {
-  for (const char* bad :
-       {"\"integer numiterations\" [0]", "\"integer numiterations\" [-2]", "\"float radius\" [0]",
-        "\"float radius\" [-1]", "\"integer maxdepth\" [-1]", "\"integer photonsperiteration\" [0]",
-        "\"integer photonsperiteration\" [-2]"}) {
-    SCOPED_TRACE(bad);
-    std::string name = std::string(bad).substr(std::string(bad).find(' ') + 1);
-    name = name.substr(0, name.find('"'));
-    try {
-      test::buildSceneText(sceneWith(bad));
-      ADD_FAILURE() << "no error";
-    } catch (const SceneError& e) {
-      EXPECT_EQ(e.location().line, 3) << e.what();
-      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    }
-  }
+  test::expectParameterErrorsLocated(
+      "Integrator \"sppm\"",
+      {"\"integer numiterations\" [0]", "\"integer numiterations\" [-2]", "\"float radius\" [0]",
+       "\"float radius\" [-1]", "\"integer maxdepth\" [-1]", "\"integer photonsperiteration\" [0]",
+       "\"integer photonsperiteration\" [-2]"});
 }
 
 const SppmRenderer& sppmOf(test::RenderedScene& built) {
