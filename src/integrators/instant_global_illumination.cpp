@@ -21,8 +21,11 @@ const int kNonSpecular = kAllBxDF & ~kSpecular;
 
 }  // namespace
 
-void InstantGlobalIlluminationIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
-  vpls_ = traceVirtualPointLights(scene, params_.nSets, params_.pathsPerSet);
+void InstantGlobalIlluminationIntegrator::preprocess(const Scene& scene,
+                                                     const PreprocessOptions& options) {
+  // --quick traces a quarter of the light paths (pbrt-v2's rule).
+  int paths = options.quick ? std::max(1, params_.pathsPerSet / 4) : params_.pathsPerSet;
+  vpls_ = traceVirtualPointLights(scene, params_.nSets, paths);
 }
 
 std::string InstantGlobalIlluminationIntegrator::statsReport() const {

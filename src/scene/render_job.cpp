@@ -222,14 +222,6 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   PluginDesc integratorDesc = !desc.integrator.name.empty()
                                   ? desc.integrator
                                   : orDefault(desc.surfaceIntegrator, "directlighting");
-  if (options.quick && integratorDesc.name == "igi") {
-    // --quick traces a quarter of igi's light paths (pbrt-v2's rule). A count below 1 is left
-    // for the factory to report where the scene gave it.
-    int nLights = integratorDesc.params.getOneInt("nlights", 64);
-    if (nLights >= 1)
-      integratorDesc.params =
-          withInt(integratorDesc.params, "nlights", std::max(1, nLights / 4), integratorDesc.loc);
-  }
   ImageRendererContext irc{
       job.camera.get(),    job.sampler.get(),       options.seed, options.quick,
       options.sppOverride, job.film->pixelBounds(), warn};
