@@ -6,6 +6,7 @@
 
 #include "accel/aggregate.h"
 #include "lights/light.h"
+#include "media/medium.h"
 
 namespace candela {
 
@@ -24,8 +25,10 @@ struct RayStats {
 
 class Scene {
  public:
-  Scene(const Aggregate* aggregate, std::vector<const Light*> lights)
-      : aggregate_(aggregate), lights_(std::move(lights)) {}
+  // volume: the medium filling the scene (pbrt-v2's Volume regions, aggregated), null for none.
+  Scene(const Aggregate* aggregate, std::vector<const Light*> lights,
+        const Medium* volume = nullptr)
+      : aggregate_(aggregate), lights_(std::move(lights)), volume_(volume) {}
   bool intersect(const Ray& ray, SurfaceInteraction* isect, RayStats& stats) const {
     ++stats.intersectionRays;
     return aggregate_->intersect(ray, isect);
@@ -42,10 +45,13 @@ class Scene {
   const std::vector<const Light*>& lights() const { return lights_; }
   const Aggregate& aggregate() const { return *aggregate_; }
   Bounds3f worldBound() const { return aggregate_->worldBound(); }
+  // The medium that fills the scene (pbrt-v2 `Volume` regions); null when there is none.
+  const Medium* volume() const { return volume_; }
 
  private:
   const Aggregate* aggregate_;
   std::vector<const Light*> lights_;
+  const Medium* volume_ = nullptr;
 };
 
 }  // namespace candela
