@@ -25,7 +25,8 @@ void InstantGlobalIlluminationIntegrator::preprocess(const Scene& scene,
                                                      const PreprocessOptions& options) {
   // --quick traces a quarter of the light paths (pbrt-v2's rule).
   int paths = options.quick ? std::max(1, params_.pathsPerSet / 4) : params_.pathsPerSet;
-  vpls_ = traceVirtualPointLights(scene, params_.nSets, paths);
+  VirtualPointLightOptions vplOptions{options.seed, options.shutterOpen, options.shutterClose};
+  vpls_ = traceVirtualPointLights(scene, params_.nSets, paths, vplOptions);
 }
 
 std::string InstantGlobalIlluminationIntegrator::statsReport() const {

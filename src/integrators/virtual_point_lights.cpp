@@ -23,22 +23,27 @@ constexpr int kMaxPathVertices = 1024;
 // Samples of rho_hd for BxDFs without a closed form (4 x 4 jittered).
 constexpr int kRhoSqrtSamples = 4;
 
-// The five well-distributed dimensions of a path's start: light choice, origin (2), direction
-// (2), each a radical inverse in its own prime base with its own digit scrambling.
-std::array<Float, 5> pathStart(uint32_t index) {
-  std::array<Float, 5> u;
-  for (int d = 0; d < 5; ++d)
-    u[d] = scrambledRadicalInverse(index, kPrimes[d], hashValues({0x76706cULL, uint64_t(d)}));
+// The six well-distributed dimensions of a path's start: light choice, origin (2), direction
+// (2) and time, each a radical inverse in its own prime base with digit scrambling drawn from the
+// seed.
+std::array<Float, 6> pathStart(uint32_t index, uint64_t seed) {
+  std::array<Float, 6> u;
+  for (int d = 0; d < 6; ++d)
+    u[d] = scrambledRadicalInverse(index, kPrimes[d], hashValues({0x76706cULL, seed, uint64_t(d)}));
   return u;
 }
 
-void traceOnePath(const Scene& scene, const Distribution1D& lightChoice, uint32_t set,
-                  uint32_t path, uint32_t index, MemoryArena& arena, RayStats& stats,
+void traceOnePath(const Scene& scene, const Distribution1D& lightChoice,
+                  const VirtualPointLightOptions& options, uint32_t set, uint32_t path,
+                  uint32_t index, MemoryArena& arena, RayStats& stats,
                   std::vector<VirtualPointLight>* out) {
-  std::array<Float, 5> u = pathStart(index);
-  RNG rng(hashValues({0x766c70617468ULL, set, path}));
+  std::array<Float, 6> u = pathStart(index, options.seed);
+  RNG rng(hashValues({0x766c70617468ULL, options.seed, set, path}));
+  // A time in the shutter interval, so that moving lights and shapes leave their VPLs where
+  // they are during the exposure, not only where they are at its start.
+  Float time = lerp(u[5], options.shutterOpen, options.shutterClose);
   std::optional<LightPathStart> start =
-      startLightPath(scene, lightChoice, u[0], Point2f(u[1], u[2]), Point2f(u[3], u[4]), 0);
+      startLightPath(scene, lightChoice, u[0], Point2f(u[1], u[2]), Point2f(u[3], u[4]), time);
   if (!start) return;
   Spectrum alpha = start->beta;
   RayDifferential ray(start->ray);
@@ -99,7 +104,8 @@ size_t VirtualPointLightSets::memoryBytes() const {
   return bytes;
 }
 
-VirtualPointLightSets traceVirtualPointLights(const Scene& scene, int nSets, int pathsPerSet) {
+VirtualPointLightSets traceVirtualPointLights(const Scene& scene, int nSets, int pathsPerSet,
+                                              const VirtualPointLightOptions& options) {
   VirtualPointLightSets result;
   result.pathsPerSet = pathsPerSet;
   result.sets.resize(size_t(nSets));
@@ -113,7 +119,7 @@ VirtualPointLightSets traceVirtualPointLights(const Scene& scene, int nSets, int
   for (int s = 0; s < nSets; ++s)
     for (int i = 0; i < pathsPerSet; ++i) {
       uint32_t index = uint32_t(s) * uint32_t(pathsPerSet) + uint32_t(i);
-      traceOnePath(scene, *lightChoice, uint32_t(s), uint32_t(i), index, arena, stats,
+      traceOnePath(scene, *lightChoice, options, uint32_t(s), uint32_t(i), index, arena, stats,
                    &result.sets[size_t(s)]);
       arena.reset();
     }

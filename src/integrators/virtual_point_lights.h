@@ -30,9 +30,16 @@ struct VirtualPointLightSets {
   size_t memoryBytes() const;
 };
 
-// nSets sets of pathsPerSet light paths each. Path i of set s takes its light choice, origin and
-// direction from scrambled radical inverses of index s * pathsPerSet + i and the rest of its
-// numbers from a generator seeded by (s, i), so the sets depend on nothing but the scene.
-VirtualPointLightSets traceVirtualPointLights(const Scene& scene, int nSets, int pathsPerSet);
+struct VirtualPointLightOptions {
+  uint64_t seed = 0;                        // the render's seed
+  Float shutterOpen = 0, shutterClose = 0;  // the paths' times are spread over this interval
+};
+
+// nSets sets of pathsPerSet light paths each. Path i of set s takes its light choice, origin,
+// direction and time from radical inverses of index s * pathsPerSet + i, scrambled by the seed,
+// and the rest of its numbers from a generator seeded by (seed, s, i), so the sets depend on
+// nothing but the scene and the options.
+VirtualPointLightSets traceVirtualPointLights(const Scene& scene, int nSets, int pathsPerSet,
+                                              const VirtualPointLightOptions& options);
 
 }  // namespace candela

@@ -2,9 +2,11 @@
 // light paths, so 1 or 2 threads, tiles of 8 or 16 pixels and a crop window give the same bits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
+#include "integrators/instant_global_illumination.h"
 #include "support/render_scene.h"
 
 namespace candela {
@@ -78,6 +80,69 @@ TEST(IgiDeterminism, TheSceneExercisesGatherRays) {
   const std::string two = "\"integer gathersamples\" [2]";
   noGather.replace(noGather.find(two), two.size(), "\"integer gathersamples\" [0]");
   EXPECT_GT(rays(kScene), rays(noGather));
+}
+
+const VirtualPointLightSets& virtualLights(test::RenderedScene& r) {
+  return dynamic_cast<const InstantGlobalIlluminationIntegrator&>(*r.job().integrator)
+      .virtualLights();
+}
+
+// The first VPL positions of every set.
+std::vector<Point3f> positions(const VirtualPointLightSets& v) {
+  std::vector<Point3f> p;
+  for (const auto& set : v.sets)
+    for (const auto& vpl : set) p.push_back(vpl.at.p);
+  return p;
+}
+
+// --seed is part of what the image is a function of: the VPL sets of two seeds are different
+// light paths, and one seed gives the same sets on every build.
+TEST(IgiDeterminism, TheSeedChoosesTheVirtualLights) {
+  auto build = [](uint64_t seed) {
+    BuildOptions o;
+    o.seed = seed;
+    return test::buildSceneText(kScene, o);
+  };
+  auto a = build(11), again = build(11), b = build(12);
+  std::vector<Point3f> pa = positions(virtualLights(a)), pb = positions(virtualLights(b));
+  ASSERT_GT(pa.size(), 10u);
+  EXPECT_EQ(pa, positions(virtualLights(again)));
+  size_t shared = 0;
+  for (const Point3f& p : pa) shared += std::count(pb.begin(), pb.end(), p);
+  EXPECT_LT(shared, pa.size() / 10) << "the two seeds' VPLs are mostly the same points";
+}
+
+// Light paths start at times spread over the shutter: a floor that moves from y = 0 down to
+// y = -1 while the shutter is open holds VPLs at every height between, not only at its start.
+TEST(IgiDeterminism, VirtualLightsSpreadOverTheShutter) {
+  const char* scene =
+      "LookAt 0 3 -3  0 0 0  0 1 0\n"
+      "Camera \"perspective\" \"float fov\" [60] \"float shutteropen\" [0]\n"
+      "  \"float shutterclose\" [1]\n"
+      "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n"
+      "SurfaceIntegrator \"igi\" \"integer nlights\" [256] \"integer nsets\" [1]\n"
+      "WorldBegin\n"
+      "LightSource \"point\" \"point from\" [0 2 0] \"rgb I\" [4 4 4]\n"
+      "Material \"matte\"\n"
+      "AttributeBegin\n"
+      "  ActiveTransform EndTime\n  Translate 0 -1 0\n  ActiveTransform All\n"
+      "  Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]\n"
+      "    \"point P\" [-50 0 -50  50 0 -50  50 0 50  -50 0 50]\n"
+      "AttributeEnd\n"
+      "WorldEnd\n";
+  auto r = test::buildSceneText(scene);
+  std::vector<Point3f> p = positions(virtualLights(r));
+  ASSERT_GT(p.size(), 64u);
+  int upperHalf = 0;
+  for (const Point3f& q : p) {
+    ASSERT_LE(q.y, 1e-3f);
+    ASSERT_GE(q.y, -1 - 1e-3f);
+    upperHalf += q.y > -0.5f;
+  }
+  // Times uniform over [0, 1] put half the floor hits above y = -0.5 (binomial: about 128 hits,
+  // the bounds about 5 standard deviations out); times all 0 would put every one at y = 0.
+  EXPECT_GT(upperHalf, int(p.size()) / 4);
+  EXPECT_LT(upperHalf, int(p.size()) * 3 / 4);
 }
 
 }  // namespace
