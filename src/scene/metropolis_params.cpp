@@ -9,9 +9,8 @@
 //                            replaces it)
 //   largestepprobability 0.3 probability that a proposal is a fresh path
 //   sigma 0.01               standard deviation of a small step in primary sample space
-// "metropolis" (pbrt 2e §15.7, on the same chains: 1000 of them, and small steps are Gaussian
-// with sigma 0.01 rather than pbrt-v2's exponentially distributed ones; pbrt-v2 has neither
-// parameter):
+// "metropolis" (pbrt 2e §15.7, on the same chains, with pbrt-v2's exponentially distributed
+// small steps of 1/1024 to 1/64 (Kelemen et al.) in place of Gaussian ones):
 //   maxdepth 7, bootstrapsamples 100000, largestepprobability 0.25 as above
 //   samplesperpixel 100      proposals per pixel (--spp replaces it)
 //   bidirectional true       paths of bdpt's strategies; false: unidirectional paths (light
@@ -20,6 +19,9 @@
 //                            chains
 //   directsamples 4          that integrator's samples per pixel
 //   maxconsecutiverejects 512  after so many rejections in a row a proposal is accepted
+//   chains 1000              (candela's, not pbrt-v2's) Markov chains; each starts from one
+//                            bootstrap path, so chains of few mutations (small images) keep some
+//                            start-up bias: fewer chains, longer each, for those
 // --quick divides the sample counts (mutations, bootstrap, direct samples) by 4 (pbrt-v2's rule).
 #include "scene/metropolis_params.h"
 
@@ -89,6 +91,8 @@ std::unique_ptr<ImageRenderer> createMetropolisRenderer(const PluginDesc& desc,
   s.mutationsPerPixel = quarterIfQuick(int(s.mutationsPerPixel), context);
   s.largeStepProbability = probability(desc, "largestepprobability", 0.25f);
   s.maxConsecutiveRejects = atLeast(desc, "maxconsecutiverejects", 512, 1);
+  s.chains = atLeast(desc, "chains", 1000, 1);
+  s.smallStep = PrimarySamples::SmallStep::Exponential;
   s.bidirectional = desc.params.getOneBool("bidirectional", true);
   bool direct = desc.params.getOneBool("dodirectseparately", true);
   int directSamples = quarterIfQuick(atLeast(desc, "directsamples", 4, 1), context);

@@ -55,6 +55,27 @@ std::string cornellBoxText(int resolution, const std::string& integrator,
   return s;
 }
 
+std::string exampleSceneText(const std::string& name, const std::string& integrator, int resolution,
+                             const std::vector<std::pair<std::string, std::string>>& replace) {
+  std::ifstream in(std::string(CANDELA_SOURCE_DIR) + "/scenes/" + name + "/" + name + ".pbrt");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string s = ss.str();
+  std::string bracketed = "[";
+  bracketed.append(std::to_string(resolution)).append("]");
+  std::vector<std::pair<std::string, std::string>> all = {
+      {"[256]", bracketed},
+      {"[256]", bracketed},
+      {"SurfaceIntegrator \"path\" \"integer maxdepth\" [8]", integrator}};
+  all.insert(all.end(), replace.begin(), replace.end());
+  for (const auto& [from, to] : all) {
+    size_t at = s.find(from);
+    if (at == std::string::npos) throw std::logic_error(name + ".pbrt has no '" + from + "'");
+    s.replace(at, from.size(), to);
+  }
+  return s;
+}
+
 RenderedScene renderSceneText(const std::string& text, const TestRenderOptions& options) {
   return run(text, options.build, &options.render);
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "renderers/sampler_renderer.h"
@@ -25,6 +26,12 @@ struct TestRenderOptions {
 // by integrator (when not empty) and beforeWorldEnd inserted before its WorldEnd.
 std::string cornellBoxText(int resolution, const std::string& integrator = "",
                            const std::string& beforeWorldEnd = "");
+
+// scenes/NAME/NAME.pbrt (whose film is 256 x 256 and whose integrator statement is
+// `SurfaceIntegrator "path" "integer maxdepth" [8]`) at resolution x resolution with that
+// statement replaced by integrator, then each (from, to) of replace applied once.
+std::string exampleSceneText(const std::string& name, const std::string& integrator, int resolution,
+                             const std::vector<std::pair<std::string, std::string>>& replace = {});
 
 // Throws what the parser or factories throw.
 RenderedScene renderSceneText(const std::string& text, const TestRenderOptions& options = {});

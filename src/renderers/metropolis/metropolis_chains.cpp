@@ -103,7 +103,7 @@ class PathEvaluator {
 PrimarySamples startState(const MetropolisSettings& settings, uint64_t seed, uint64_t index) {
   PrimarySamples state(hashValues({seed, kStartState, index}),
                        hashValues({seed, kStartStateSeed, index}), settings.sigma,
-                       settings.largeStepProbability);
+                       settings.largeStepProbability, settings.smallStep);
   state.startLargeStep();
   return state;
 }

@@ -14,6 +14,7 @@
 #include "cameras/camera.h"
 #include "film/film.h"
 #include "integrators/bdpt.h"
+#include "renderers/metropolis/primary_samples.h"
 #include "renderers/sampler_renderer.h"
 
 namespace candela {
@@ -24,7 +25,9 @@ struct MetropolisSettings {
   int chains = 1000;
   int64_t mutationsPerPixel = 100;
   Float largeStepProbability = 0.3f;
-  Float sigma = 0.01f;
+  Float sigma = 0.01f;  // of Gaussian small steps
+  // pbrt-v3's Gaussian small steps of sigma, or pbrt-v2's exponential ones (PrimarySamples).
+  PrimarySamples::SmallStep smallStep = PrimarySamples::SmallStep::Gaussian;
   // Bidirectional: one strategy of a path picked uniformly and weighted by MIS (pbrt-v3);
   // otherwise unidirectional paths (BdptIntegrator::Weighting::Unidirectional).
   bool bidirectional = true;

@@ -5,8 +5,11 @@
 namespace candela {
 
 PrimarySamples::PrimarySamples(uint64_t sequence, uint64_t seed, Float sigma,
-                               Float largeStepProbability)
-    : rng_(sequence, seed), sigma_(sigma), largeStepProbability_(largeStepProbability) {}
+                               Float largeStepProbability, SmallStep smallStep)
+    : rng_(sequence, seed),
+      sigma_(sigma),
+      largeStepProbability_(largeStepProbability),
+      smallStep_(smallStep) {}
 
 void PrimarySamples::startIteration() {
   ++iteration_;
@@ -55,6 +58,19 @@ void PrimarySamples::bringUpToDate(Value& v) {
   v.backupModified = v.lastModified;
   if (largeStep_) {
     v.value = rng_.uniformFloat();
+  } else if (smallStep_ == SmallStep::Exponential) {
+    // Kelemen et al.'s mutation: a step of size s2 exp(-ln(s2 / s1) u) between s1 = 1/1024 and
+    // s2 = 1/64, up or down with equal probability (symmetric, so the acceptance ratio is the
+    // ratio of the contributions); the missed steps one after another.
+    constexpr Float s1 = Float(1) / 1024, s2 = Float(1) / 64;
+    const Float logRatio = std::log(s2 / s1);
+    Float x = v.value;
+    for (int64_t k = v.lastModified; k < iteration_; ++k) {
+      Float step = s2 * std::exp(-logRatio * rng_.uniformFloat());
+      x += rng_.uniformFloat() < Float(0.5) ? step : -step;
+      x -= std::floor(x);
+    }
+    v.value = std::min(x, kOneMinusEpsilon);
   } else {
     // The small steps it missed (the accepted ones and this one) add up to one Gaussian step
     // whose variance is their sum; Box-Muller for the normal deviate.

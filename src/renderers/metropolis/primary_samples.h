@@ -1,8 +1,10 @@
 // The state of a Metropolis chain in primary sample space (Kelemen et al. 2002; pbrt 3e
 // §16.4.3): the uniform numbers a path is built from, mutated lazily. A number is touched only
 // when the path asks for it, and then catches up on the mutations it missed: a large step
-// (a fresh uniform) replaces it, n missed small steps are one Gaussian step of sigma·√n, wrapped
-// into [0, 1). Rejecting a proposal restores every number it touched.
+// (a fresh uniform) replaces it, and the small steps it missed are applied, wrapped into [0, 1):
+// n Gaussian steps of sigma as one of sigma·√n (pbrt 3e), or Kelemen et al.'s exponentially
+// distributed steps of 1/1024 to 1/64 one by one (pbrt 2e §15.7). Rejecting a proposal restores
+// every number it touched.
 //
 // The numbers come in streams (camera subpath, light subpath, connection), each its own
 // sequence, so that a path that reads more of one stream does not shift the others.
@@ -20,7 +22,9 @@ namespace candela {
 class PrimarySamples {
  public:
   static constexpr int kStreams = 3;
-  PrimarySamples(uint64_t sequence, uint64_t seed, Float sigma, Float largeStepProbability);
+  enum class SmallStep { Gaussian, Exponential };
+  PrimarySamples(uint64_t sequence, uint64_t seed, Float sigma, Float largeStepProbability,
+                 SmallStep smallStep = SmallStep::Gaussian);
   // Where the random numbers of the mutations come from from now on.
   void reseed(uint64_t sequence, uint64_t seed) { rng_.setSequence(sequence, seed); }
   // A proposal: a large step with probability largeStepProbability, else a small step.
@@ -43,6 +47,7 @@ class PrimarySamples {
 
   RNG rng_;
   Float sigma_, largeStepProbability_;
+  SmallStep smallStep_;
   std::vector<Value> values_;
   int64_t iteration_ = 0, lastLargeStep_ = 0;
   bool largeStep_ = true;
