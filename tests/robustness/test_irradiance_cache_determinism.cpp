@@ -80,3 +80,30 @@ TEST(IrradianceCacheDeterminism, CropWindowEqualsTheSameRegionOfTheFullImage) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// --quick takes a sixteenth of every estimate's hemisphere samples (pbrt-v2's rule), at least
+// one, and keeps nfilter below the count.
+TEST(IrradianceCacheQuick, QuickTakesASixteenthOfTheSamples) {
+  auto settingsOf = [](const std::string& params, bool quick) {
+    BuildOptions o;
+    o.quick = quick;
+    auto r = test::buildSceneText(
+        test::cornellBoxText(8, "SurfaceIntegrator \"irradiancecache\" " + params), o);
+    auto* ic = dynamic_cast<const IrradianceCacheIntegrator*>(r.job().integrator.get());
+    EXPECT_NE(ic, nullptr);
+    return ic ? ic->settings() : IrradianceCacheSettings{};
+  };
+  EXPECT_EQ(settingsOf("\"integer nsamples\" [640]", false).nSamples, 640);
+  EXPECT_EQ(settingsOf("\"integer nsamples\" [640]", true).nSamples, 40);
+  EXPECT_EQ(settingsOf("\"integer nsamples\" [8]", true).nSamples, 1);
+  IrradianceCacheSettings s =
+      settingsOf("\"integer nsamples\" [64] \"integer nfilter\" [10]", true);
+  EXPECT_EQ(s.nSamples, 4);
+  EXPECT_EQ(s.nFilter, 3);
+}
+
+}  // namespace
+}  // namespace candela

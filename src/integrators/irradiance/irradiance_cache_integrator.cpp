@@ -55,6 +55,13 @@ IrradianceSample IrradianceCacheIntegrator::newSample(const IrradianceQuery& q, 
   return {q.at.p, q.n, est.E, validityRadius(est, q.pixelSpacing, settings_, sceneSize_)};
 }
 
+void IrradianceCacheIntegrator::preprocess(const Scene&, const PreprocessOptions& options) {
+  if (!options.quick || quickApplied_) return;
+  quickApplied_ = true;
+  settings_.nSamples = std::max(1, settings_.nSamples / 16);
+  settings_.nFilter = std::min(settings_.nFilter, settings_.nSamples - 1);
+}
+
 RayStats IrradianceCacheIntegrator::prepare(const Scene& scene, const Camera& camera,
                                             const Sampler& sampler, const Film& film,
                                             const PrepassOptions& options) {

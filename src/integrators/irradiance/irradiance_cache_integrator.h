@@ -29,6 +29,8 @@ class IrradianceCacheIntegrator : public SpecularRecursionIntegrator {
  public:
   explicit IrradianceCacheIntegrator(const IrradianceCacheSettings& settings);
   ~IrradianceCacheIntegrator() override;
+  // --quick: a sixteenth of the hemisphere samples of every estimate (pbrt-v2's rule).
+  void preprocess(const Scene& scene, const PreprocessOptions& options) override;
   RayStats prepare(const Scene& scene, const Camera& camera, const Sampler& sampler,
                    const Film& film, const PrepassOptions& options) override;
   std::string statsReport() const override;
@@ -52,6 +54,7 @@ class IrradianceCacheIntegrator : public SpecularRecursionIntegrator {
                          const Scene& scene, IntegratorContext& ctx) const;
 
   IrradianceCacheSettings settings_;
+  bool quickApplied_ = false;
   Float cosMaxAngle_;
   PathIntegrator paths_;
   std::unique_ptr<IrradianceOctree> cache_;
