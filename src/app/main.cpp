@@ -82,6 +82,17 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.nThreads = cli.nThreads;
   build.showProgress = !cli.quiet;
   RenderJob job = buildRenderJob(desc, build, device);
+  // The variance estimate needs each pixel's own samples to carry all of its light; splatted
+  // light (bdpt, light tracing, Metropolis) and photon densities (sppm) are not in them, so a
+  // target could never be met, or would be met too early.
+  if (cli.targetError > 0 && cli.reference.empty() &&
+      (job.imageRenderer || (job.integrator && job.integrator->splats())))
+    throw std::runtime_error(
+        "--target-error without --reference estimates the error from each pixel's variance, "
+        "which this scene's " +
+        std::string(job.imageRenderer ? "renderer" : "integrator") +
+        " does not keep (its light is splatted or gathered from photons): give --reference, or "
+        "--time-budget");
   if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
 
   RenderOptions options;
