@@ -49,13 +49,21 @@ Spectrum photonRadiance(const PhotonMap& map, const Point3f& p, const Vector3f& 
 }
 
 Spectrum photonIrradiance(const PhotonMap& map, const Point3f& p, const Normal3f& n,
-                          const DensityEstimate& est, MemoryArena& arena) {
+                          const DensityEstimate& est, MemoryArena& arena, bool excludeAtP) {
   if (map.empty() || est.nUsed <= 0) return Spectrum(0);
+  DensityEstimate search = est;
+  if (excludeAtP) ++search.nUsed;  // room for the photons at p, which are then dropped
   Float r2;
-  std::span<NearPhoton> photons = gather(map, p, est, arena, &r2);
+  std::span<NearPhoton> photons = gather(map, p, search, arena, &r2);
+  const bool full = photons.size() == size_t(search.nUsed);
+  if (excludeAtP) {
+    auto others = std::stable_partition(photons.begin(), photons.end(),
+                                        [](const NearPhoton& np) { return np.dist2 > 0; });
+    photons = photons.first(size_t(others - photons.begin()));
+  }
   // When nUsed were found the farthest one only fixes the disc: counting it too would make the
   // estimate nUsed / (nUsed - 1) too large for uniformly scattered photons (pbrt-v2 counts it).
-  if (photons.size() == size_t(est.nUsed)) photons = photons.first(photons.size() - 1);
+  if (full && !photons.empty()) photons = photons.first(photons.size() - 1);
   if (photons.empty() || !(r2 > 0)) return Spectrum(0);
   Float scale = dropBrightest(&photons, est.nFilter) / (Float(map.nPaths()) * kPi * r2);
   Spectrum e(0);

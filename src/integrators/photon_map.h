@@ -63,6 +63,7 @@ class RadiancePhotonMap {
   // The nearest radiance photon whose normal lies in n's hemisphere (so light does not leak
   // through thin surfaces), or nullptr.
   const RadiancePhoton* nearest(const Point3f& p, const Normal3f& n) const;
+  std::span<const RadiancePhoton> photons() const { return photons_; }
 
  private:
   std::vector<RadiancePhoton> photons_;

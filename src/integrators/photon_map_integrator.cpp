@@ -88,9 +88,9 @@ void PhotonMapIntegrator::computeRadiancePhotons(std::vector<RadiancePhotonSite>
           const Spectrum& rho = side > 0 ? site.rhoR : site.rhoT;
           if (rho.isBlack()) continue;
           Normal3f n = side > 0 ? site.n : -site.n;
-          Spectrum e = photonIrradiance(direct, site.p, n, estimate_, mem) +
-                       photonIrradiance(indirect_, site.p, n, estimate_, mem) +
-                       photonIrradiance(caustic_, site.p, n, estimate_, mem);
+          Spectrum e = photonIrradiance(direct, site.p, n, estimate_, mem, true) +
+                       photonIrradiance(indirect_, site.p, n, estimate_, mem, true) +
+                       photonIrradiance(caustic_, site.p, n, estimate_, mem, true);
           lo += rho * e * (1 / kPi);
         }
         photons[i] = RadiancePhoton{site.p, site.n, lo};
