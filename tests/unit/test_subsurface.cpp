@@ -136,7 +136,9 @@ TEST(SubsurfaceOctree, HierarchicalSumApproachesBruteForce) {
   EXPECT_LT(meanRelativeError(0), 1e-5);
   double e001 = meanRelativeError(0.01f), e01 = meanRelativeError(0.1f),
          e1 = meanRelativeError(1.0f), e10 = meanRelativeError(10.0f);
-  EXPECT_LT(e001, 0.01);  // pbrt-v2's default .05 neighbourhood: about a percent
+  // Measured: 1e-5 at .01, 9e-4 at pbrt-v2's default .05, 4e-3 at .1, 2e-2 at 1, 0.26 at 10.
+  EXPECT_LT(e001, 1e-4);
+  EXPECT_LT(meanRelativeError(0.05f), 5e-3);
   EXPECT_LE(e001, e01);
   EXPECT_LE(e01, e1);
   EXPECT_LT(e1, e10);
