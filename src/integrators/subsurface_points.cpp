@@ -192,9 +192,12 @@ SubsurfacePointSet placeSubsurfacePoints(const Scene& scene,
         ++fails;
       }
     }
-    if (set.points.size() >= options.maxPoints) set.reachedPointLimit = true;
+    if (set.points.size() >= options.maxPoints || crossings.size() >= options.maxCrossings)
+      set.reachedPointLimit = true;
     bool covered = fails >= kMaxFails || set.reachedPointLimit;
-    if (covered && crossings.size() >= kCrossingsPerPoint * set.points.size()) break;
+    if (covered && (crossings.size() >= kCrossingsPerPoint * set.points.size() ||
+                    crossings.size() >= options.maxCrossings))
+      break;
     // Nothing translucent inside the placement sphere after many lines: stop.
     if (crossings.empty() && set.linesTraced >= 16 * kBatch) break;
   }

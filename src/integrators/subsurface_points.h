@@ -45,7 +45,9 @@ struct SubsurfacePlacementOptions {
   uint64_t seed = 0;
   Float time = 0;
   int nThreads = 0;
-  size_t maxPoints = size_t(1) << 21;
+  size_t maxPoints = size_t(1) << 20;
+  // Crossings kept for the areas (12 bytes each): placement stops at this many.
+  size_t maxCrossings = size_t(1) << 24;
 };
 
 // Places the points (irradiance left zero); empty when no line meets a translucent surface.
