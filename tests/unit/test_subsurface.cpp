@@ -7,6 +7,7 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "integrators/dipole_subsurface.h"
+#include "integrators/subsurface_points.h"
 #include "materials/measured_subsurface.h"
 #include "materials/subsurface_scattering.h"
 #include "support/parameter_errors.h"
@@ -143,6 +144,61 @@ TEST(SubsurfaceOctree, HierarchicalSumApproachesBruteForce) {
   EXPECT_LE(e01, e1);
   EXPECT_LT(e1, e10);
   EXPECT_GT(e10, 10 * e001);
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// Two translucent spheres (radius 1 and 0.5) and an opaque quad: the points lie on the spheres
+// only, at least minDistance apart, their areas add up to the spheres' area, and none of it
+// depends on the thread count.
+TEST(SubsurfacePoints, PoissonSpacedOnTranslucentSurfacesWithTheirArea) {
+  auto built = test::buildSceneText(
+      "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n"
+      "WorldBegin\n"
+      "AttributeBegin\nMaterial \"subsurface\"\nShape \"sphere\" \"float radius\" [1]\n"
+      "Translate 3 0 0\nShape \"sphere\" \"float radius\" [0.5]\nAttributeEnd\n"
+      "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]\n"
+      "  \"point P\" [-5 -2 -5  5 -2 -5  5 -2 5  -5 -2 5]\n"
+      "WorldEnd\n");
+  SubsurfacePlacementOptions o;
+  o.minDistance = 0.1f;
+  o.seed = 42;
+  o.nThreads = 1;
+  SubsurfacePointSet one = placeSubsurfacePoints(*built.job().scene, o);
+  o.nThreads = 2;
+  SubsurfacePointSet two = placeSubsurfacePoints(*built.job().scene, o);
+  ASSERT_EQ(one.points.size(), two.points.size());
+  for (size_t i = 0; i < one.points.size(); ++i) {
+    EXPECT_EQ(one.points[i].p, two.points[i].p);
+    EXPECT_EQ(one.points[i].area, two.points[i].area);
+  }
+  ASSERT_GT(one.points.size(), 500u);
+  EXPECT_FALSE(one.reachedPointLimit);
+  const Float trueArea = 4 * kPi * (1 + 0.25f);
+  double sum = 0;
+  for (const SubsurfacePoint& sp : one.points) {
+    sum += sp.area;
+    // On one of the spheres, not on the quad.
+    Float r1 = distance(sp.p, Point3f(0, 0, 0)), r2 = distance(sp.p, Point3f(3, 0, 0));
+    EXPECT_TRUE(std::abs(r1 - 1) < 1e-3f || std::abs(r2 - 0.5f) < 1e-3f) << sp.p;
+  }
+  // Crofton's estimate from about 32 crossings a point: within 2 %.
+  EXPECT_NEAR(sum, trueArea, 0.02 * trueArea);
+  EXPECT_NEAR(one.surfaceArea, trueArea, 0.02 * trueArea);
+  // Dart throwing: no two points closer than minDistance (brute force over pairs).
+  Float closest = kInfinity;
+  for (size_t i = 0; i < one.points.size(); ++i)
+    for (size_t j = i + 1; j < one.points.size(); ++j)
+      closest = std::min(closest, distance(one.points[i].p, one.points[j].p));
+  EXPECT_GE(closest, o.minDistance);
+  // ... and the surface covered: discs of radius minDistance / 2 around the points do not
+  // overlap, and discs of radius minDistance cover the surface.
+  EXPECT_LT(double(one.points.size()), trueArea / (kPi * 0.05 * 0.05));
+  EXPECT_GT(double(one.points.size()), trueArea / (kPi * 0.1 * 0.1));
 }
 
 }  // namespace
