@@ -11,7 +11,10 @@
 // throwing (Poisson-disk: a candidate is kept when no kept point lies within minDistance), and
 // every crossing's area then goes to the kept point nearest to it, which estimates the point's
 // Voronoi cell on the surface. Lines are traced in parallel with one random sequence per line
-// and thinned in line order, so the points depend on the seed only.
+// and thinned in line order, so the points depend on the seed only. First, 16384 probe lines
+// across the whole scene find the translucent surfaces' bounds (plus a quarter of their extent),
+// and the placement lines cross only that sphere: a translucent object so small that no probe line
+// meets it (about 1e-3 of the scene's cross-section) gets no points.
 #pragma once
 
 #include <vector>
