@@ -49,6 +49,7 @@ struct PreprocessOptions {
   bool showProgress = false;
   bool quick = false;                            // --quick: a cheaper, rougher prepass
   bool sceneHasSpecular = true;                  // some material may scatter perfectly specularly
+  bool sceneHasSubsurface = true;                // some material has a subsurface() medium
   Float shutterOpen = 0, shutterClose = 0;       // the camera's: the times a prepass samples
   std::function<void(const std::string&)> warn;  // may be empty
 };

@@ -9,6 +9,8 @@
 
 namespace candela {
 
+class SubsurfaceScattering;
+
 class Material {
  public:
   explicit Material(const Texture<Float>* bump = nullptr) : bump_(bump) {}
@@ -18,6 +20,9 @@ class Material {
   // no caustic map without one). Conservative: true may still give none.
   virtual bool maybeSpecular() const { return false; }
   const Texture<Float>* bumpMap() const { return bump_; }
+  // The medium under the surface for the dipole integrator (pbrt 2e §16.5): null for every
+  // material but "subsurface" and "kdsubsurface".
+  virtual const SubsurfaceScattering* subsurface() const { return nullptr; }
 
  protected:
   // si itself without a bump map; else si with the bumped shading frame, written to *storage.

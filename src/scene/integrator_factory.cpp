@@ -1,6 +1,7 @@
 // SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator.
 #include "integrators/ambient_occlusion.h"
 #include "integrators/bdpt.h"
+#include "integrators/dipole_subsurface.h"
 #include "integrators/direct_lighting.h"
 #include "integrators/instant_global_illumination.h"
 #include "integrators/irradiance/irradiance_cache_integrator.h"
@@ -132,6 +133,25 @@ std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Came
   return std::make_unique<BdptIntegrator>(*importance, maxDepth, choice, visualize, pixelBounds);
 }
 
+// pbrt-v2's "dipolesubsurface" (pbrt 2e §16.5).
+std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc) {
+  const ParamSet& p = desc.params;
+  DipoleSubsurfaceSettings s;
+  s.maxDepth = maxDepthParam(desc, true);
+  s.maxError = p.getOneFloat("maxerror", s.maxError);
+  if (!(s.maxError >= 0 && s.maxError < kInfinity))
+    throw SceneError(p.locationOf("maxerror", desc.loc), "maxerror must be >= 0 and finite");
+  s.minSampleDistance = p.getOneFloat("minsampledistance", s.minSampleDistance);
+  if (!(s.minSampleDistance > 0 && s.minSampleDistance < kInfinity))
+    throw SceneError(p.locationOf("minsampledistance", desc.loc),
+                     "minsampledistance must be > 0 and finite");
+  if (p.find("pointsfile"))
+    throw SceneError(p.locationOf("pointsfile", desc.loc),
+                     "dipolesubsurface: \"pointsfile\" (pbrt-v2's precomputed sample points) is "
+                     "not supported; remove it and the points are placed at preprocess time");
+  return std::make_unique<DipoleSubsurfaceIntegrator>(s);
+}
+
 }  // namespace
 
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
@@ -177,12 +197,14 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
   if (desc.name == "irradiancecache")
     return std::make_unique<IrradianceCacheIntegrator>(irradianceCacheParams(desc));
   if (desc.name == "igi") return createIgi(desc);
+  if (desc.name == "dipolesubsurface") return createDipoleSubsurface(desc);
   // pbrt-v2 registers its photon mapper under both names; nothing differs.
   if (desc.name == "photonmap" || desc.name == "exphotonmap")
     return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
-  throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
-                     {"ambientocclusion", "ao", "bdpt", "bidirectional", "directlighting",
-                      "exphotonmap", "igi", "irradiancecache", "path", "photonmap", "whitted"});
+  throwUnknownPlugin(
+      desc.loc, "surface integrator", desc.name,
+      {"ambientocclusion", "ao", "bdpt", "bidirectional", "dipolesubsurface", "directlighting",
+       "exphotonmap", "igi", "irradiancecache", "path", "photonmap", "whitted"});
 }
 
 }  // namespace candela

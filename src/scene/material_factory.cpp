@@ -17,15 +17,16 @@
 #include "materials/uber.h"
 #include "scene/plugin_factories.h"
 #include "scene/spectrum_input.h"
+#include "scene/subsurface_material_params.h"
 #include "textures/solid_textures.h"
 
 namespace candela {
 
 namespace {
 
-const std::vector<std::string> kMaterialNames = {"matte",  "plastic", "translucent", "glass",
-                                                 "mirror", "metal",   "shinymetal",  "substrate",
-                                                 "uber",   "mix",     "measured",    "clay"};
+const std::vector<std::string> kMaterialNames = {
+    "matte",     "plastic", "translucent", "glass",    "mirror", "metal",      "shinymetal",
+    "substrate", "uber",    "mix",         "measured", "clay",   "subsurface", "kdsubsurface"};
 // Named in the draft (§10.9) without coefficients.
 const std::set<std::string> kUnprintedFits = {"felt", "primer", "skin", "bluepaint",
                                               "brushedmetal"};
@@ -184,6 +185,9 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
                                spec("opacity", 1), flt("roughness", 0.1f), flt("index", 1.5f)},
         bump);
   if (d.name == "measured") return measured(d, bump);
+  // The dipole's translucent materials (pbrt 2e §16.5): subsurface_material_params.h.
+  if (d.name == "subsurface" || d.name == "kdsubsurface")
+    return createSubsurfaceMaterial(d, textures_, bump);
   if (auto fit = lafortuneFit(d.name)) return std::make_unique<LafortuneMaterial>(*fit, bump);
   if (kUnprintedFits.count(d.name))
     throw SceneError(loc, "material '" + d.name +

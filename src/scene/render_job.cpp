@@ -269,6 +269,8 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   pre.shutterClose = job.camera->shutterClose();
   pre.sceneHasSpecular = false;
   for (const auto& m : job.materials) pre.sceneHasSpecular |= m->maybeSpecular();
+  pre.sceneHasSubsurface = false;
+  for (const auto& m : job.materials) pre.sceneHasSubsurface |= m->subsurface() != nullptr;
   if (options.warn)
     pre.warn = [warn = options.warn, loc = integratorDesc.loc](const std::string& message) {
       warn(loc, message);
