@@ -74,17 +74,11 @@ TEST(MetropolisVsPath, CornellBoxRegionsAgree) {
 // Each chain starts from one bootstrap path and stays at that path's depth. The bootstrap's
 // paths stand for the image only as their number grows: with 1000 per depth and 16 chains of
 // 1024 mutations on 16 x 16 pixels, the caustic's regions came out 15% low (z -5.0) and a region
-// of the indirectly lit room's 57% low (z -5.6), as chains started far from where the image's
-// rare bright paths are had too few mutations to get there (start-up bias, Veach's thesis
-// §11.3.3). So the normal suite holds only mlt on the room, and the Long one has pbrt-v3's default
-// bootstrap (100000 a depth) and chains of 16384 mutations.
+// of the indirectly lit room's 57% low (z -5.6): chains started far from where the image's rare
+// bright paths are, with too few mutations to get there (start-up bias, Veach's thesis §11.3.3).
+// So the normal suite holds only mlt on the room, and the Long one takes more (below).
 std::string mlt8(int bootstrap) {
   return "Integrator \"mlt\" \"integer maxdepth\" [8] \"integer chains\" [16] "
-         "\"integer bootstrapsamples\" [" +
-         std::to_string(bootstrap) + "]";
-}
-std::string metropolis8(int bootstrap) {
-  return "Renderer \"metropolis\" \"integer maxdepth\" [8] \"integer chains\" [16] "
          "\"integer bootstrapsamples\" [" +
          std::to_string(bootstrap) + "]";
 }
@@ -108,18 +102,28 @@ TEST(LongMetropolisVsPath, CornellBoxRegionsAgree) {
 namespace candela {
 namespace {
 
-// Open (issue 12): with pbrt-v3's bootstrap and 16 chains of 16384 mutations, mlt still came out
-// 5% low in region 0 of the indirect room (z -3.7, 64 replicates, 16 minutes); like the shorter
-// chains above, the low regions are where the image's rare bright paths are. Disabled until the
-// cause (start-up bias or a defect) is known; run with --gtest_also_run_disabled_tests.
+// Open (issue 12), so disabled (run with --gtest_also_run_disabled_tests): with pbrt-v3's default
+// bootstrap (100000 paths a depth) and 256 chains of 256 mutations a pixel over the image, on
+// 16 x 16 pixels, 32 replicates, mlt came out 8-10% low in regions 0-3 of the caustic scene
+// (z -4.3 to -6.9) and 9% low in region 15 of the indirect room (z -4.2), 20 minutes in all. The
+// Cornell box and the mirror caustic at maxdepth 5 agree; what differs here (maxdepth 8, glass)
+// is where to look. Not start-up bias alone: 16 chains of 16384 mutations gave 5% low too.
+std::string manyChains(const char* head) {
+  return std::string(head) +
+         " \"integer maxdepth\" [8] \"integer chains\" [256] "
+         "\"integer bootstrapsamples\" [100000]";
+}
+
 TEST(LongMltVsPath, DISABLED_IndirectRoomAndCausticRegionsAgree) {
-  expectExampleRegionsAgree("indirect-room", mlt8(100000), 32, 64, 256, {});
-  expectExampleRegionsAgree("caustic", mlt8(100000), 32, 64, 256, kGrownCausticLight);
+  std::string mlt = manyChains("Integrator \"mlt\"");
+  expectExampleRegionsAgree("indirect-room", mlt, 16, 32, 256, {});
+  expectExampleRegionsAgree("caustic", mlt, 16, 32, 256, kGrownCausticLight);
 }
 
 TEST(LongMetropolisVsPath, DISABLED_IndirectRoomAndCausticRegionsAgree) {
-  expectExampleRegionsAgree("indirect-room", metropolis8(100000), 32, 64, 256, {});
-  expectExampleRegionsAgree("caustic", metropolis8(100000), 32, 64, 256, kGrownCausticLight);
+  std::string metropolis = manyChains("Renderer \"metropolis\"");
+  expectExampleRegionsAgree("indirect-room", metropolis, 16, 32, 256, {});
+  expectExampleRegionsAgree("caustic", metropolis, 16, 32, 256, kGrownCausticLight);
 }
 
 }  // namespace
