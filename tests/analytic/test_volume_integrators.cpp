@@ -150,5 +150,44 @@ TEST(VolumeIntegrators, SurfaceBehindAnAbsorbingBoxIsAttenuatedByBeersLaw) {
   }
 }
 
+class ShadowRaysThroughTheVolume : public testing::TestWithParam<const char*> {};
+
+TEST_P(ShadowRaysThroughTheVolume, AreAttenuatedByBeersLaw) {
+  // A matte wall at z = 5 lit by a point light at z = 2 on the camera's axis, seen through a
+  // thin screen window (rays along the axis); an absorbing slab z in [3, 4] lies across both the
+  // camera ray and the shadow ray: the wall is exp(-2 σa) as bright as without the slab.
+  auto scene = [](const std::string& volume) {
+    return std::string(
+               "Camera \"orthographic\" \"float screenwindow\" [-1e-3 1e-3 -1e-3 1e-3]\n"
+               "Film \"image\" \"integer xresolution\" [2] \"integer yresolution\" [2]\n"
+               "Sampler \"random\" \"integer pixelsamples\" [2]\n"
+               "SurfaceIntegrator ") +
+           GetParam() +
+           "\nWorldBegin\n"
+           "LightSource \"point\" \"point from\" [0 0 2] \"rgb I\" [3 3 3]\n" +
+           volume +
+           "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
+           "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]\n"
+           "  \"point P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\n"
+           "WorldEnd\n";
+  };
+  const ImageBuffer clear = test::renderSceneText(scene("")).film().image();
+  const ImageBuffer slab =
+      test::renderSceneText(scene("Volume \"homogeneous\" \"rgb sigma_a\" [0.3 0.3 0.3] "
+                                  "\"point p0\" [-10 -10 3] \"point p1\" [10 10 4]\n"))
+          .film()
+          .image();
+  ASSERT_EQ(clear.data.size(), slab.data.size());
+  for (size_t i = 0; i < clear.data.size(); i += size_t(clear.channelCount())) {
+    ASSERT_GT(clear.data[i], 0);
+    EXPECT_NEAR(slab.data[i] / clear.data[i], std::exp(-0.6f), 1e-5f) << i;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(SurfaceIntegrators, ShadowRaysThroughTheVolume,
+                         testing::Values("\"whitted\"", "\"directlighting\"",
+                                         "\"directlighting\" \"string strategy\" \"one\"",
+                                         "\"path\""));
+
 }  // namespace
 }  // namespace candela
