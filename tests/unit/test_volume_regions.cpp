@@ -219,5 +219,27 @@ TEST(VolumeRegions, SceneWithoutVolumesBuildsNone) {
   EXPECT_NE(dynamic_cast<const AggregateVolume*>(two.job().scene->volume()), nullptr);
 }
 
+TEST(VolumeRegions, StatementsUseTheirTransformAndPhaseSelection) {
+  // The region's box is in the coordinate system of the CTM at its statement.
+  test::RenderedScene built = test::buildSceneText(volumeScene(
+      "AttributeBegin\nTranslate 5 0 0\nScale 2 2 2\nVolume \"homogeneous\"",
+      "\"rgb sigma_s\" [1 2 3] \"string phase\" \"schlick\" \"float g\" [0.5]\nAttributeEnd"));
+  const Medium* v = built.job().scene->volume();
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->at(Point3f(6.9f, 1.9f, 1.9f), 0).sigmaS, Spectrum(1, 2, 3));
+  EXPECT_TRUE(v->at(Point3f(0.5f, 0.5f, 0.5f), 0).sigmaS.isBlack());
+  EXPECT_EQ(v->phase(Point3f(6, 1, 1), 0).kind(), PhaseFunction::Kind::Schlick);
+  EXPECT_FLOAT_EQ(v->phase(Point3f(6, 1, 1), 0).g(), 0.5f);
+  for (auto [name, kind] : {std::pair{"isotropic", PhaseFunction::Kind::Isotropic},
+                            std::pair{"rayleigh", PhaseFunction::Kind::Rayleigh},
+                            std::pair{"mie-hazy", PhaseFunction::Kind::MieHazy},
+                            std::pair{"mie-murky", PhaseFunction::Kind::MieMurky},
+                            std::pair{"hg", PhaseFunction::Kind::HenyeyGreenstein}}) {
+    test::RenderedScene one = test::buildSceneText(
+        volumeScene("Volume \"exponential\"", std::string("\"string phase\" \"") + name + "\""));
+    EXPECT_EQ(one.job().scene->volume()->phase(Point3f(0.5f, 0.5f, 0.5f), 0).kind(), kind) << name;
+  }
+}
+
 }  // namespace
 }  // namespace candela
