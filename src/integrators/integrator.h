@@ -26,6 +26,7 @@ struct PrepassOptions {
 };
 
 class SplatBuffer;
+class VolumeIntegrator;
 
 // An image an integrator makes besides the film's (bdpt's per-strategy images), written next to
 // the output under its name.
@@ -40,6 +41,9 @@ struct IntegratorContext {
   RayStats& stats;
   // Where an integrator that splats() adds light landing on other pixels; null otherwise.
   SplatBuffer* splats = nullptr;
+  // The volume integrator whose transmittance shadow rays and path segments take when the scene
+  // has a volume (see volume_transmittance.h); null otherwise.
+  const VolumeIntegrator* volumeIntegrator = nullptr;
 };
 
 // What preprocess may use from the build besides the scene.

@@ -2,12 +2,16 @@
 
 #include "accel/primitive.h"
 #include "core/sampling.h"
+#include "integrators/volume_transmittance.h"
 
 namespace candela {
 
-Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
-                        const Point2f& uLight, const Point2f& uScattering, Float uComponent,
-                        const Scene& scene, RayStats& stats) {
+namespace {
+
+// volume: set when the caller can attenuate by the scene's volume (pbrt-v2 Volume regions).
+Spectrum estimateDirectThrough(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
+                               const Point2f& uLight, const Point2f& uScattering, Float uComponent,
+                               const Scene& scene, RayStats& stats, IntegratorContext* volume) {
   const int nonSpecular = kAllBxDF & ~kSpecular;
   Spectrum ld(0);
   // Light sampling.
@@ -18,6 +22,7 @@ Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Li
   if (lightPdf > 0 && !li.isBlack()) {
     Spectrum f = bsdf.f(it.wo, wi, nonSpecular) * absDot(wi, bsdf.shadingNormal());
     if (!f.isBlack() && scene.unoccluded(vis, stats)) {
+      if (volume) li *= volumeTransmittance(vis, scene, *volume);
       if (light.isDelta()) {
         ld += f * li / lightPdf;
       } else {
@@ -45,10 +50,20 @@ Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Li
       } else {
         le = light.Le(ray);
       }
+      if (volume && !le.isBlack()) le *= volumeTransmittance(ray, scene, *volume);
       if (!le.isBlack()) ld += f * le * (weight / scatteringPdf);
     }
   }
   return ld;
+}
+
+}  // namespace
+
+Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
+                        const Point2f& uLight, const Point2f& uScattering, Float uComponent,
+                        const Scene& scene, RayStats& stats) {
+  return estimateDirectThrough(it, bsdf, light, uLight, uScattering, uComponent, scene, stats,
+                               nullptr);
 }
 
 Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf, const Scene& scene,
@@ -61,7 +76,8 @@ Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf, 
       Point2f uLight = ctx.sampler.get2D();
       Point2f uScattering = ctx.sampler.get2D();
       Float uComponent = ctx.sampler.get1D();
-      ld += estimateDirect(it, bsdf, *light, uLight, uScattering, uComponent, scene, ctx.stats);
+      ld += estimateDirectThrough(it, bsdf, *light, uLight, uScattering, uComponent, scene,
+                                  ctx.stats, &ctx);
     }
     l += ld / Float(n);
   }
@@ -78,7 +94,8 @@ Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, c
   if (nLights == 0) return Spectrum(0);
   int index = std::min(int(uChoice * nLights), nLights - 1);
   const Light& light = *scene.lights()[index];
-  return estimateDirect(it, bsdf, light, uLight, uScattering, uComponent, scene, ctx.stats) *
+  return estimateDirectThrough(it, bsdf, light, uLight, uScattering, uComponent, scene, ctx.stats,
+                               &ctx) *
          Float(nLights);
 }
 

@@ -7,7 +7,8 @@
 
 namespace candela {
 
-// Radiance reflected at it toward it.wo from light `light`, one sample of each strategy.
+// Radiance reflected at it toward it.wo from light `light`, one sample of each strategy. The two
+// functions below that take the context also attenuate by the scene's volume, if it has one.
 Spectrum estimateDirect(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
                         const Point2f& uLight, const Point2f& uScattering, Float uComponent,
                         const Scene& scene, RayStats& stats);

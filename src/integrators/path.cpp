@@ -3,6 +3,7 @@
 #include "accel/primitive.h"
 #include "integrators/light_sampling.h"
 #include "integrators/specular_differentials.h"
+#include "integrators/volume_transmittance.h"
 #include "materials/material.h"
 
 namespace candela {
@@ -30,6 +31,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     SurfaceInteraction isect;
     Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
     bool hit = scene.intersect(ray, &isect, ctx.stats);
+    // A segment after a bounce crosses the scene's volume (the camera ray's: the renderer's).
+    if (bounces > 0) beta *= volumeTransmittance(ray, scene, ctx);
     if (bounces == 0) {
       *alpha = hit ? 1 : 0;
       *hitDistance = hit ? ray.tMax : kInfinity;

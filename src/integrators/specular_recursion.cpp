@@ -2,6 +2,7 @@
 
 #include "accel/primitive.h"
 #include "integrators/specular_differentials.h"
+#include "integrators/volume_transmittance.h"
 #include "materials/material.h"
 
 namespace candela {
@@ -44,7 +45,8 @@ Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Sc
   if (depth + 1 < maxDepth_)
     l += specularlyScattered(isect, *bsdf, ray, ctx.sampler, [&](const RayDifferential& next) {
       Float a;
-      return trace(next, scene, ctx, depth + 1, &a, term);
+      Spectrum li = trace(next, scene, ctx, depth + 1, &a, term);  // next.tMax is now the hit's
+      return li * volumeTransmittance(next, scene, ctx);
     });
   return l;
 }

@@ -1,5 +1,7 @@
 #include "integrators/whitted.h"
 
+#include "integrators/volume_transmittance.h"
+
 namespace candela {
 
 Spectrum WhittedIntegrator::directLight(const SurfaceInteraction& isect, const BSDF& bsdf,
@@ -14,7 +16,7 @@ Spectrum WhittedIntegrator::directLight(const SurfaceInteraction& isect, const B
     Spectrum f = bsdf.f(isect.wo, wi);
     // The shadow ray last: it is the expensive test.
     if (!f.isBlack() && scene.unoccluded(vis, ctx.stats))
-      l += f * li * (absDot(wi, bsdf.shadingNormal()) / pdf);
+      l += f * li * volumeTransmittance(vis, scene, ctx) * (absDot(wi, bsdf.shadingNormal()) / pdf);
   }
   return l;
 }

@@ -47,6 +47,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   const bool adaptive = initial < spp && s0 == 0 && s1 == spp;
   // Offset rays one pixel over are too far apart when a pixel gets many samples (pbrt 3e §1.4.3).
   const Float differentialScale = 1 / std::sqrt(Float(std::max(1, spp)));
+  const VolumeIntegrator* volume = scene.volume() ? volumeIntegrator_ : nullptr;
 
   ProgressReporter progress(int64_t(nx) * ny, "Rendering",
                             ProgressReporter::modeFor(options.quiet));
@@ -57,7 +58,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     TileCounters& c = counters.local();
     std::unique_ptr<Sampler> sampler = sampler_.clone();
     MemoryArena arena;
-    IntegratorContext ctx{*sampler, arena, c.rays, splats};
+    IntegratorContext ctx{*sampler, arena, c.rays, splats, volume};
     int tx = tileIndex % nx, ty = tileIndex / nx;
     int x0 = bounds.pMin.x + tx * tile, y0 = bounds.pMin.y + ty * tile;
     int x1 = std::min(x0 + tile, bounds.pMax.x), y1 = std::min(y0 + tile, bounds.pMax.y);
@@ -81,7 +82,17 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
         if (scene.intersect(probe, &first, c.rays))
           result.surfaceId = uint64_t(reinterpret_cast<uintptr_t>(first.primitive));
       }
-      if (rayWeight > 0) result.L = integrator_.Li(ray, scene, ctx, &alpha) * rayWeight;
+      if (rayWeight > 0 && !volume) result.L = integrator_.Li(ray, scene, ctx, &alpha) * rayWeight;
+      if (rayWeight > 0 && volume) {
+        // The volume between the camera and the first surface (lrt draft §16.7: Scene::L).
+        Ray segment = ray;
+        SurfaceInteraction hit;
+        scene.intersect(segment, &hit, c.rays);
+        Spectrum surface = integrator_.Li(ray, scene, ctx, &alpha);
+        Spectrum transmittance;
+        Spectrum inVolume = volume->Li(segment, scene, ctx, &transmittance);
+        result.L = (transmittance * surface + inVolume) * rayWeight;
+      }
       if (!result.L.isFinite()) {
         ++c.nonFinite;
         result.L = Spectrum(0);

@@ -9,6 +9,7 @@
 #include "cameras/camera.h"
 #include "film/film.h"
 #include "integrators/integrator.h"
+#include "integrators/volume_integrator.h"
 
 namespace candela {
 
@@ -33,14 +34,21 @@ struct RenderResult {
 class SamplerRenderer {
  public:
   // The integrator is not const: render() first lets it prepare (SurfaceIntegrator::prepare).
-  SamplerRenderer(const Camera& camera, const Sampler& sampler, SurfaceIntegrator& integrator)
-      : camera_(camera), sampler_(sampler), integrator_(integrator) {}
+  // volumeIntegrator: for scenes with a volume (Scene::volume()); each camera ray then gets
+  // L = T·L_surface + L_volume (lrt draft §16.7). Null, or a scene without a volume: surface only.
+  SamplerRenderer(const Camera& camera, const Sampler& sampler, SurfaceIntegrator& integrator,
+                  const VolumeIntegrator* volumeIntegrator = nullptr)
+      : camera_(camera),
+        sampler_(sampler),
+        integrator_(integrator),
+        volumeIntegrator_(volumeIntegrator) {}
   RenderResult render(const Scene& scene, Film& film, const RenderOptions& options) const;
 
  private:
   const Camera& camera_;
   const Sampler& sampler_;
   SurfaceIntegrator& integrator_;
+  const VolumeIntegrator* volumeIntegrator_;
 };
 
 }  // namespace candela

@@ -9,6 +9,7 @@
 #include "scene/material_factory.h"
 #include "scene/plugin_factories.h"
 #include "scene/shape_factory.h"
+#include "scene/volume_factory.h"
 #include "scene/working_color_space.h"
 #include "shapes/triangle_mesh.h"
 
@@ -27,6 +28,7 @@ std::string BuildStats::report() const {
   os << "  lights  " << lights << " (area lights " << areaLights << ")\n";
   os << "  materials  " << materials << "\n";
   os << "  textures loaded  " << textures << "\n";
+  os << "  volume regions  " << volumeRegions << "\n";
   os << "  aggregate  " << aggregate.name << "\n";
   for (const auto& [what, n] : aggregate.counts) os << "  " << what << "  " << n << "\n";
   return os.str();
@@ -175,8 +177,19 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   const WarningSink& warn = options.warn;
   job.textures = std::make_unique<TextureFactory>(desc.textures, options.loadImage, warn);
 
-  if (!desc.volumes.empty())
-    throw SceneError(desc.volumes.front().loc, "volume regions are not supported yet");
+  // pbrt-v2 Volume regions (lrt draft ch. 12): one medium filling the scene and the volume
+  // integrator that renders it (pbrt-v2's default: "emission"); neither exists without regions.
+  job.volume = createSceneVolume(desc.volumes);
+  for (const VolumeDesc& v : desc.volumes) reportUnused(v, warn);
+  job.stats.volumeRegions = long(desc.volumes.size());
+  if (job.volume) {
+    PluginDesc volumeIntegratorDesc = orDefault(desc.volumeIntegrator, "emission");
+    job.volumeIntegrator = createVolumeIntegrator(volumeIntegratorDesc);
+    reportUnused(volumeIntegratorDesc, warn);
+  } else if (!desc.volumeIntegrator.name.empty() && warn) {
+    warn(desc.volumeIntegrator.loc, "VolumeIntegrator '" + desc.volumeIntegrator.name +
+                                        "' is ignored: the scene has no Volume regions");
+  }
 
   // Film and camera.
   PluginDesc filmDesc = orDefault(desc.film, "image");
@@ -228,6 +241,11 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   job.imageRenderer = createImageRenderer(integratorDesc, desc.renderer, irc);
   if (job.imageRenderer) {
     reportUnused(desc.renderer, warn);
+    if (job.volume && warn)
+      warn(desc.volumes.front().loc,
+           "Volume regions are ignored by the '" +
+               (desc.renderer.name.empty() ? integratorDesc.name : desc.renderer.name) +
+               "' renderer; only the sampler renderer renders them");
   } else {
     if (!desc.renderer.name.empty() && desc.renderer.name != "sampler" && warn)
       warn(desc.renderer.loc,
@@ -258,7 +276,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   job.stats.aggregate = job.aggregate->stats();
   std::vector<const Light*> lights;
   for (const auto& l : job.lights) lights.push_back(l.get());
-  job.scene = std::make_unique<Scene>(job.aggregate.get(), std::move(lights));
+  job.scene = std::make_unique<Scene>(job.aggregate.get(), std::move(lights), job.volume.get());
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
   PreprocessOptions pre;
   pre.seed = options.seed;
@@ -287,7 +305,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
 ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options) {
   if (job.imageRenderer)
     return job.imageRenderer->render(*job.scene, *job.camera, *job.film, options);
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator, job.volumeIntegrator.get());
   ProgressiveResult result;
   if (options.afterPass || options.timeBudget > 0) {
     // The passes' clock starts after the preprocess; reports and the budget count it too.

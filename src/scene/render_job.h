@@ -16,6 +16,7 @@
 #include "cameras/camera.h"
 #include "film/film.h"
 #include "integrators/integrator.h"
+#include "integrators/volume_integrator.h"
 #include "lights/light.h"
 #include "materials/material.h"
 #include "renderers/image_renderer.h"
@@ -60,6 +61,7 @@ struct BuildStats {
   long lights = 0, areaLights = 0;
   long materials = 0;
   long textures = 0;
+  long volumeRegions = 0;  // pbrt-v2 Volume statements
   AggregateStats aggregate;
   std::string report() const;
 };
@@ -80,6 +82,10 @@ struct RenderJob {
   SceneGeometry geometry;  // the aggregate's primitives and instances
   std::unique_ptr<Aggregate> aggregate;
   std::unique_ptr<Scene> scene;
+  // pbrt-v2 Volume regions: the medium filling the scene and the integrator that renders it;
+  // both null in a scene without regions.
+  std::unique_ptr<Medium> volume;
+  std::unique_ptr<VolumeIntegrator> volumeIntegrator;
   std::unique_ptr<Film> film;
   // The Film's output parameters ("compression", "half"); command-line flags override them.
   std::string exrCompression = "zip";
