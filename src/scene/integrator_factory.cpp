@@ -5,6 +5,7 @@
 #include "integrators/instant_global_illumination.h"
 #include "integrators/irradiance/irradiance_cache_integrator.h"
 #include "integrators/path.h"
+#include "integrators/volpath.h"
 #include "integrators/whitted.h"
 #include "scene/photon_map_params.h"
 #include "scene/plugin_factories.h"
@@ -155,6 +156,14 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
     return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
   }
   if (desc.name == "path") return std::make_unique<PathIntegrator>(maxDepthParam(desc, false));
+  if (desc.name == "volpath") {
+    // pbrt-v3's VolPathIntegrator parameters and defaults.
+    Float rrThreshold = p.getOneFloat("rrthreshold", 1);
+    if (!(rrThreshold >= 0 && rrThreshold < kInfinity))
+      throw SceneError(p.locationOf("rrthreshold", desc.loc),
+                       "rrthreshold must be >= 0 and finite");
+    return std::make_unique<VolPathIntegrator>(maxDepthParam(desc, false), rrThreshold);
+  }
   if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
   if (desc.name == "ambientocclusion") {
     // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
@@ -180,9 +189,10 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
   // pbrt-v2 registers its photon mapper under both names; nothing differs.
   if (desc.name == "photonmap" || desc.name == "exphotonmap")
     return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
-  throwUnknownPlugin(desc.loc, "surface integrator", desc.name,
-                     {"ambientocclusion", "ao", "bdpt", "bidirectional", "directlighting",
-                      "exphotonmap", "igi", "irradiancecache", "path", "photonmap", "whitted"});
+  throwUnknownPlugin(
+      desc.loc, "surface integrator", desc.name,
+      {"ambientocclusion", "ao", "bdpt", "bidirectional", "directlighting", "exphotonmap", "igi",
+       "irradiancecache", "path", "photonmap", "volpath", "whitted"});
 }
 
 }  // namespace candela

@@ -30,6 +30,7 @@ namespace candela {
 
 class EmbreeDevice;
 class MaterialFactory;
+class NamedMedia;
 struct TriangleMesh;
 
 using WarningSink = std::function<void(const FileLoc&, const std::string&)>;
@@ -77,7 +78,8 @@ struct RenderJob {
   std::vector<std::unique_ptr<TriangleMesh>> meshes;
   std::vector<std::unique_ptr<Shape>> shapes;
   std::vector<std::unique_ptr<Light>> lights;
-  SceneGeometry geometry;  // the aggregate's primitives and instances
+  SceneGeometry geometry;                  // the aggregate's primitives and instances
+  std::unique_ptr<NamedMedia> namedMedia;  // pbrt-v3's media and interfaces the scene names
   std::unique_ptr<Aggregate> aggregate;
   std::unique_ptr<Scene> scene;
   std::unique_ptr<Film> film;

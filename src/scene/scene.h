@@ -23,6 +23,18 @@ struct RayStats {
   }
 };
 
+// pbrt-v3's named media as the scene uses them (MakeNamedMedium / MediumInterface); empty in a
+// scene without them. Surfaces carry theirs on their Primitive.
+struct SceneMedia {
+  bool present = false;            // some shape, light or the camera names a medium
+  const Medium* camera = nullptr;  // the medium camera rays start in (null: vacuum)
+  struct LightMedium {
+    const Light* light;
+    const Medium* medium;
+  };
+  std::vector<LightMedium> lights;  // lights (not area lights) that sit in a medium
+};
+
 class Scene {
  public:
   // volume: the medium filling the scene (pbrt-v2's Volume regions, aggregated), null for none.
@@ -47,11 +59,15 @@ class Scene {
   Bounds3f worldBound() const { return aggregate_->worldBound(); }
   // The medium that fills the scene (pbrt-v2 `Volume` regions); null when there is none.
   const Medium* volume() const { return volume_; }
+  // pbrt-v3's named media (see SceneMedia); set once by the build.
+  const SceneMedia& media() const { return media_; }
+  void setMedia(SceneMedia media) { media_ = std::move(media); }
 
  private:
   const Aggregate* aggregate_;
   std::vector<const Light*> lights_;
   const Medium* volume_ = nullptr;
+  SceneMedia media_;
 };
 
 }  // namespace candela
