@@ -56,7 +56,17 @@ class Scene {
   }
   const std::vector<const Light*>& lights() const { return lights_; }
   const Aggregate& aggregate() const { return *aggregate_; }
-  Bounds3f worldBound() const { return aggregate_->worldBound(); }
+  // The geometry's bounds, grown to hold the volume's (pbrt 2e §1.3.1: lights at infinity place
+  // their shadow-ray ends beyond both); an unbounded volume does not grow it.
+  Bounds3f worldBound() const {
+    Bounds3f b = aggregate_->worldBound();
+    if (volume_) {
+      Bounds3f v = volume_->worldBound();
+      Vector3f d = v.diagonal();
+      if (!v.empty() && d.x < kInfinity && d.y < kInfinity && d.z < kInfinity) b = unionOf(b, v);
+    }
+    return b;
+  }
   // The medium that fills the scene (pbrt-v2 `Volume` regions); null when there is none.
   const Medium* volume() const { return volume_; }
   // pbrt-v3's named media (see SceneMedia); set once by the build.

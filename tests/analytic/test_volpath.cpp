@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "media/grid_density_medium.h"
 #include "support/region_agreement.h"
 #include "support/render_scene.h"
 #include "support/tail_probabilities.h"
@@ -65,11 +66,7 @@ std::string furnaceScene(const std::string& medium, bool cameraInside) {
 // two-sided at Šidák 0.01 over all pixels and channels. 256 paths per pixel, each path's
 // estimate of bounded variance, so the normal approximation of the pixel mean holds. Pixels
 // whose camera rays miss the sphere see the sky exactly.
-void expectEveryPixelIsTheSky(const std::string& scene, bool expectMedium) {
-  test::TestRenderOptions o;
-  o.build.seed = 5;
-  auto r = test::renderSceneText(scene, o);
-  const Film& film = r.film();
+void expectFilmIsTheSky(const Film& film, bool expectMedium) {
   const int checks = kRes * kRes * 3;
   int inMedium = 0;
   for (int y = 0; y < kRes; ++y)
@@ -91,6 +88,13 @@ void expectEveryPixelIsTheSky(const std::string& scene, bool expectMedium) {
   if (expectMedium) {
     EXPECT_GT(inMedium, kRes * kRes / 4);
   }
+}
+
+void expectEveryPixelIsTheSky(const std::string& scene, bool expectMedium) {
+  test::TestRenderOptions o;
+  o.build.seed = 5;
+  auto r = test::renderSceneText(scene, o);
+  expectFilmIsTheSky(r.film(), expectMedium);
 }
 
 TEST(VolPathFurnace, HomogeneousSeenFromOutside) {
@@ -160,6 +164,27 @@ TEST(VolPathFurnace, GridAroundTheCamera) {
                                    "\"float g\" [0.4]",
                    true),
       true);
+}
+
+// pbrt-v2 Volume regions reach volpath as Scene::volume(), the medium that fills the scene: a
+// bounded non-absorbing grid set as that volume (no interface anywhere) is a furnace too.
+TEST(VolPathFurnace, SceneVolumeFillsTheScene) {
+  // No shapes and no named media: the sky and the volume alone.
+  std::string scene = furnaceScene("\"homogeneous\"", false);
+  scene = scene.substr(0, scene.find("MakeNamedMedium")) + "LightSource \"infinite\"\nWorldEnd\n";
+  BuildOptions options;
+  options.seed = 5;
+  auto built = test::buildSceneText(scene, options);
+  RenderJob& job = built.job();
+  std::vector<Float> density = {0.5f, 1, 2, 1, 1, 0.5f, 2, 1};
+  GridDensityMedium volume(Spectrum(0), Spectrum(2), 0.2f, 2, 2, 2, density, Point3f(-1, -1, -1),
+                           Point3f(1, 1, 1), rotate(30, Vector3f(1, 1, 0)));
+  Scene withVolume(job.aggregate.get(), job.scene->lights(), &volume);
+  // The sky's shadow rays must end beyond the volume: the lights see the scene's new bounds.
+  for (const auto& light : job.lights) light->preprocess(withVolume.worldBound());
+  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  renderer.render(withVolume, *job.film, RenderOptions{0, 16, true});
+  expectFilmIsTheSky(*job.film, true);
 }
 
 // The furnace fails when something absorbs: the check can fail.
