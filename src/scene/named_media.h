@@ -27,6 +27,7 @@ class NamedMedia {
   bool used() const { return firstUsed_ != nullptr; }
   const MediumDesc* firstUsed() const { return firstUsed_; }
   FileLoc firstReferenceLoc() const { return firstReference_; }
+  const SceneDescription& description() const { return desc_; }
   // The MakeNamedMedium statements nothing named.
   std::vector<const MediumDesc*> unused() const;
 

@@ -115,9 +115,12 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* n
 void warnAboutNamedMedia(const NamedMedia& media, const PluginDesc& integrator, bool imageRenderer,
                          const WarningSink& warn) {
   if (!warn) return;
-  for (const MediumDesc* m : media.unused())
+  std::vector<const MediumDesc*> unused = media.unused();
+  for (const MediumDesc* m : unused)
     warn(m->loc,
          "named medium '" + m->mediumName + "' is never used (no MediumInterface names it)");
+  for (const MediumDesc& m : media.description().media)
+    if (std::find(unused.begin(), unused.end(), &m) == unused.end()) reportUnused(m, warn);
   if (!media.used() || (integrator.name == "volpath" && !imageRenderer)) return;
   const MediumDesc& first = *media.firstUsed();
   warn(first.loc, "integrator '" + integrator.name + "' ignores participating media: medium '" +

@@ -190,6 +190,14 @@ TEST(MediaScenes, UnusedMediaAreReportedAndNotBuilt) {
   EXPECT_FALSE(built.job().scene->media().present);
 }
 
+TEST(MediaScenes, UnusedParametersOfAMediumAreReported) {
+  Captured c;
+  test::buildSceneText(mediumScene("\"homogeneous\" \"float sigma_ss\" [1]"), c.options);
+  EXPECT_EQ(c.count("sigma_ss"), 1);
+  EXPECT_EQ(c.count("test.pbrt:4:"), 1);
+  EXPECT_EQ(c.count("\"string type\""), 0);
+}
+
 TEST(MediaScenes, ASceneWithoutMediaCarriesNone) {
   auto built = test::buildSceneText(test::cornellBoxText(8));
   const RenderJob& job = built.job();
