@@ -172,7 +172,7 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
     bool hit = scene.intersect(ray, &isect, ctx.stats);
     FreeFlight flight;
     if (medium) {
-      flight = sampleFreeFlight(*medium, ray, rng);
+      flight = sampleFreeFlight(*medium, ray, rng, beta);
       l += beta * flight.emitted;
       beta *= flight.weight;
     }

@@ -60,8 +60,16 @@ Spectrum marchedTransmittance(const Medium& medium, const Ray& ray, int nSteps) 
   return exp(-tau);
 }
 
-FreeFlight sampleFreeFlight(const Medium& medium, const Ray& ray, RNG& rng) {
+FreeFlight sampleFreeFlight(const Medium& medium, const Ray& ray, RNG& rng,
+                            const Spectrum& throughput) {
   FreeFlight f;
+  // Channel probabilities: the throughput's share (uniform when it is black or not finite).
+  Spectrum channelP(Float(1) / 3);
+  Float total = throughput[0] + throughput[1] + throughput[2];
+  if (total > 0 && total < kInfinity) channelP = throughput / total;
+  auto channelAverage = [&](const Spectrum& s) {
+    return channelP[0] * s[0] + channelP[1] * s[1] + channelP[2] * s[2];
+  };
   Float t0, t1;
   if (!medium.intersectP(ray, &t0, &t1) || !(t1 > t0)) return f;
   Float speed = ray.d.length();
@@ -69,17 +77,19 @@ FreeFlight sampleFreeFlight(const Medium& medium, const Ray& ray, RNG& rng) {
   Float length = (t1 - t0) * speed;
 
   if (medium.isHomogeneous() && !medium.emits()) {
-    // Closed form (pbrt 3e §15.2.1): a channel chosen uniformly, its exponential distance; the
-    // density of the outcome is the average over the channels.
+    // Closed form (pbrt 3e §15.2.1): a channel chosen by channelP, its exponential distance; the
+    // density of the outcome is the channelP-weighted average over the channels.
     MediumPoint mp = medium.at(ray(t0), ray.time);
     Spectrum sigmaT = mp.sigmaT();
-    int channel = std::min(int(rng.uniformFloat() * 3), 2);
+    Float uChannel = rng.uniformFloat();
+    int channel = uChannel < channelP[0] ? 0 : uChannel < channelP[0] + channelP[1] ? 1 : 2;
+    if (channelP[channel] == 0) channel = channelP[2] > 0 ? 2 : channelP[1] > 0 ? 1 : 0;
     Float u = exponentialSample(rng);
     Float distance = sigmaT[channel] > 0 ? u / sigmaT[channel] : kInfinity;
     bool scattered = distance < length;
     Float s = scattered ? distance : length;
     Spectrum tr = attenuation(sigmaT, s);
-    Float density = scattered ? (sigmaT * tr).average() : tr.average();
+    Float density = scattered ? channelAverage(sigmaT * tr) : channelAverage(tr);
     if (!(density > 0)) {
       f.weight = Spectrum(0);
       return f;
@@ -92,7 +102,8 @@ FreeFlight sampleFreeFlight(const Medium& medium, const Ray& ray, RNG& rng) {
   }
 
   // Delta tracking with a null-collision choice between scattering and continuing, each with
-  // probability proportional to its coefficient's channel average; the weight σx / (μ̄ P(x))
+  // probability proportional to its coefficient's channel average (weighted by channelP and the
+  // flight's weight so far); the weight σx / (μ̄ P(x))
   // keeps the estimator unbiased when the channels differ (and is 1 - σa/μ̄ when they don't).
   // Absorption is carried in the weight rather than ending the path.
   Float mu = scalarMajorant(medium, ray, t0, t1, length);
@@ -107,7 +118,7 @@ FreeFlight sampleFreeFlight(const Medium& medium, const Ray& ray, RNG& rng) {
     if (emits) f.emitted += f.weight * mp.Le / mu;
     Spectrum sigmaN;
     for (int c = 0; c < 3; ++c) sigmaN[c] = std::max(Float(0), mu - mp.sigmaT()[c]);
-    Float ps = mp.sigmaS.average(), pn = sigmaN.average();
+    Float ps = channelAverage(mp.sigmaS * f.weight), pn = channelAverage(sigmaN * f.weight);
     if (!(ps + pn > 0)) {
       f.weight = Spectrum(0);  // absorbed at the majorant: nothing goes on
       return f;

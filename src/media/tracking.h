@@ -34,6 +34,10 @@ struct FreeFlight {
   Spectrum emitted{0};       // the medium's own emission collected along the way (pre-weighted)
   MediumPoint coefficients;  // at the scattering point (when scattered)
 };
-FreeFlight sampleFreeFlight(const Medium& medium, const Ray& ray, RNG& rng);
+// throughput (the path's, >= 0): the channels are favoured in proportion to it, as Kutz et al.
+// and pbrt 4e do, so that a channel the path still carries is not starved by one it has lost;
+// any throughput gives an unbiased estimate.
+FreeFlight sampleFreeFlight(const Medium& medium, const Ray& ray, RNG& rng,
+                            const Spectrum& throughput = Spectrum(1));
 
 }  // namespace candela

@@ -129,9 +129,9 @@ MeanEstimate estimateMean(int n, Estimate estimate) {
 
 // Each check: the tracked mean against the marched reference (10^4 steps: its own error is below
 // 1e-4, far under the tracking's standard error), two-sided at Šidák 0.001 over all checks of the
-// suite (39 channel checks). Estimates are bounded in [0, 1] or nearly so, so
+// suite (45 channel checks). Estimates are bounded in [0, 1] or nearly so, so
 // with 20,000 samples the normal approximation of the mean holds.
-constexpr int kChecks = 39;
+constexpr int kChecks = 45;
 constexpr int kSamples = 20000;
 void expectAgrees(const MeanEstimate& m, const Spectrum& reference, const char* what) {
   for (int c = 0; c < 3; ++c) {
@@ -164,8 +164,10 @@ TEST(Tracking, DeltaTrackingEscapeAgreesWithRayMarching) {
                                     : smoothGrid(Spectrum(0), Spectrum(2));
     for (const Ray& ray : testRays()) {
       Spectrum reference = marchedTransmittance(g, ray, 10000);
+      // The chromatic case with a lopsided path throughput (channels favoured unevenly).
+      Spectrum throughput = chromatic ? Spectrum(3, 1, 0.2f) : Spectrum(1);
       auto escaped = [&] {
-        FreeFlight f = sampleFreeFlight(g, ray, rng);
+        FreeFlight f = sampleFreeFlight(g, ray, rng, throughput);
         if (!chromatic) {
           // 1 up to float rounding: a few ulps for each of the flight's null collisions.
           EXPECT_NEAR(f.weight[0], 1, 1e-4);
@@ -185,19 +187,22 @@ TEST(Tracking, HomogeneousFreeFlightIsUnbiased) {
   Ray ray(Point3f(0, 0, 0), Vector3f(0, 0, 1), 0.8f);
   RNG rng(3);
   Spectrum t = trackedTransmittance(m, ray, rng);
-  MeanEstimate escape = estimateMean(kSamples, [&] {
-    FreeFlight f = sampleFreeFlight(m, ray, rng);
-    return f.scattered ? Spectrum(0) : f.weight;
-  });
-  MeanEstimate scatter = estimateMean(kSamples, [&] {
-    FreeFlight f = sampleFreeFlight(m, ray, rng);
-    EXPECT_TRUE(!f.scattered || (f.t >= 0 && f.t <= 0.8f));
-    return f.scattered ? f.weight : Spectrum(0);
-  });
   Spectrum scattered;
   for (int c = 0; c < 3; ++c) scattered[c] = sigmaS[c] / (sigmaA[c] + sigmaS[c]) * (1 - t[c]);
-  expectAgrees(escape, t, "homogeneous escape");
-  expectAgrees(scatter, scattered, "homogeneous scattering");
+  // Any throughput that picks the channels is unbiased: uniform, and a lopsided one.
+  for (Spectrum throughput : {Spectrum(1), Spectrum(0.1f, 1, 5)}) {
+    MeanEstimate escape = estimateMean(kSamples, [&] {
+      FreeFlight f = sampleFreeFlight(m, ray, rng, throughput);
+      return f.scattered ? Spectrum(0) : f.weight;
+    });
+    MeanEstimate scatter = estimateMean(kSamples, [&] {
+      FreeFlight f = sampleFreeFlight(m, ray, rng, throughput);
+      EXPECT_TRUE(!f.scattered || (f.t >= 0 && f.t <= 0.8f));
+      return f.scattered ? f.weight : Spectrum(0);
+    });
+    expectAgrees(escape, t, "homogeneous escape");
+    expectAgrees(scatter, scattered, "homogeneous scattering");
+  }
 }
 
 // A medium that emits (pbrt-v2 regions' Le; the pbrt-v3 media do not): a slab z in [0, 1] of
