@@ -28,6 +28,8 @@ class NamedMedia {
   const MediumDesc* firstUsed() const { return firstUsed_; }
   FileLoc firstReferenceLoc() const { return firstReference_; }
   const SceneDescription& description() const { return desc_; }
+  long createdCount() const { return long(created_.size()); }
+  long interfaceCount() const { return long(interfaceStorage_.size()); }
   // The MakeNamedMedium statements nothing named.
   std::vector<const MediumDesc*> unused() const;
 

@@ -28,6 +28,7 @@ std::string BuildStats::report() const {
   os << "  lights  " << lights << " (area lights " << areaLights << ")\n";
   os << "  materials  " << materials << "\n";
   os << "  textures loaded  " << textures << "\n";
+  os << "  named media  " << namedMedia << " (interfaces " << mediumInterfaces << ")\n";
   os << "  aggregate  " << aggregate.name << "\n";
   for (const auto& [what, n] : aggregate.counts) os << "  " << what << "  " << n << "\n";
   return os.str();
@@ -286,6 +287,8 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   job.scene = std::make_unique<Scene>(job.aggregate.get(), std::move(lights));
   sceneMedia.camera = job.namedMedia->get(desc.camera.medium, desc.camera.mediumLoc);
   sceneMedia.present = job.namedMedia->used();
+  job.stats.namedMedia = job.namedMedia->createdCount();
+  job.stats.mediumInterfaces = job.namedMedia->interfaceCount();
   warnAboutNamedMedia(*job.namedMedia, integratorDesc, job.imageRenderer != nullptr, warn);
   job.scene->setMedia(std::move(sceneMedia));
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());

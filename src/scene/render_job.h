@@ -61,6 +61,7 @@ struct BuildStats {
   long lights = 0, areaLights = 0;
   long materials = 0;
   long textures = 0;
+  long namedMedia = 0, mediumInterfaces = 0;  // pbrt-v3 media created, shapes' interfaces
   AggregateStats aggregate;
   std::string report() const;
 };

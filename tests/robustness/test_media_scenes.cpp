@@ -178,6 +178,8 @@ TEST(MediaScenes, IntegratorsThatIgnoreMediaSaySo) {
   auto built = test::buildSceneText(scene, c.options);
   EXPECT_EQ(c.count("ignores"), 0);
   EXPECT_TRUE(built.job().scene->media().present);
+  EXPECT_EQ(built.job().stats.namedMedia, 1);
+  EXPECT_EQ(built.job().stats.mediumInterfaces, 1);
 }
 
 TEST(MediaScenes, UnusedMediaAreReportedAndNotBuilt) {
@@ -204,6 +206,8 @@ TEST(MediaScenes, ASceneWithoutMediaCarriesNone) {
   EXPECT_FALSE(job.scene->media().present);
   EXPECT_EQ(job.scene->media().camera, nullptr);
   for (const Primitive& p : job.geometry.primitives) EXPECT_EQ(p.mediumInterface, nullptr);
+  EXPECT_EQ(job.stats.namedMedia, 0);
+  EXPECT_NE(job.stats.report().find("named media  0 (interfaces 0)"), std::string::npos);
 }
 
 }  // namespace
