@@ -27,19 +27,23 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = {"cornell-box": "scenes/cornell-box/cornell-box.pbrt",
           "caustic": "scenes/caustic/caustic.pbrt",
           "indirect-room": "scenes/indirect-room/indirect-room.pbrt",
-          "spheres": "scenes/spheres/spheres.pbrt"}
+          "spheres": "scenes/spheres/spheres.pbrt",
+          # pbrt-v3 media: only "volpath" renders them (run with --scenes smoke
+          # --methods volpath/random,volpath/stratified; the other integrators ignore media).
+          "smoke": "scenes/smoke/smoke.pbrt"}
 # Each scene's size, for the parameters given in scene units (the photon search radius).
-SCENE_SIZE = {"cornell-box": 550, "caustic": 16, "indirect-room": 10, "spheres": 10}
+SCENE_SIZE = {"cornell-box": 550, "caustic": 16, "indirect-room": 10, "spheres": 10, "smoke": 10}
 DEFAULT_SCENES = ["cornell-box", "caustic", "indirect-room"]
 # The method that renders each scene's reference: path tracing, except where it converges too
 # slowly to serve (the caustic of a small light seen through glass: bidirectional).
-REFERENCE_METHOD = {"caustic": "bdpt"}
+REFERENCE_METHOD = {"caustic": "bdpt", "smoke": "volpath"}
 # Every method at its scene-file defaults except the depth of the unbiased ones, which matches the
 # reference's (deep enough that Russian roulette, not the limit, ends the paths), and the photon
 # radii, in scene units: photonmap's maxdist a hundredth of the scene, SPPM's initial radius about
 # an eightieth (smaller ones left the caustic scene speckled at 64 iterations). --spp sets SPPM's
 # iterations; it takes no Sampler, so one sampler suffices.
 INTEGRATORS = {"path": '"path" "integer maxdepth" [100]',
+               "volpath": '"volpath" "integer maxdepth" [100]',
                "directlighting": '"directlighting"',
                "bdpt": '"bdpt" "integer maxdepth" [100]',
                "photonmap": '"photonmap" "float maxdist" [{maxdist}]',
@@ -49,7 +53,8 @@ INTEGRATORS = {"path": '"path" "integer maxdepth" [100]',
                # Its bootstrap takes bootstrapsamples x (maxdepth + 1) paths: depth 8, so it
                # leaves out light of more than 8 bounces that the reference has.
                "mlt": '"mlt" "integer maxdepth" [8]'}
-SPPM_RADIUS = {"cornell-box": 8, "caustic": 0.2, "indirect-room": 0.2, "spheres": 0.2}
+SPPM_RADIUS = {"cornell-box": 8, "caustic": 0.2, "indirect-room": 0.2, "spheres": 0.2,
+               "smoke": 0.2}
 SAMPLERS = {"stratified": '"stratified"', "random": '"random"'}
 DEFAULT_METHODS = ["path/stratified", "path/random", "directlighting/stratified",
                    "bdpt/stratified", "photonmap/stratified", "irradiancecache/stratified",
@@ -62,7 +67,7 @@ def integrator_statement(integrator, scene):
 
 
 def variant(scene_text, integrator, sampler, scene):
-    s = re.sub(r'^SurfaceIntegrator .*$', integrator_statement(integrator, scene), scene_text,
+    s = re.sub(r'^(Surface)?Integrator .*$', integrator_statement(integrator, scene), scene_text,
                flags=re.M)
     return re.sub(r'^Sampler [^\n]*$', "Sampler " + SAMPLERS[sampler], s, flags=re.M)
 
@@ -138,7 +143,7 @@ def main():
         # cache.
         ref_scene = os.path.join(os.path.dirname(scene_path), f".{name}-reference.pbrt")
         with open(ref_scene, "w") as f:
-            f.write(re.sub(r'^SurfaceIntegrator .*$', integrator_statement(REFERENCE_METHOD.get(name, "path"), name), text,
+            f.write(re.sub(r'^(Surface)?Integrator .*$', integrator_statement(REFERENCE_METHOD.get(name, "path"), name), text,
                            flags=re.M))
         try:
             ref = subprocess.run([os.path.join(ROOT, "tools", "reference.sh"), ref_scene,

@@ -77,6 +77,9 @@ class SurfaceIntegrator {
   // Whether Li also adds light to other pixels through ctx.splats (light tracing). The renderer
   // then takes every pixel's samples, those outside the crop window too (see SamplerRenderer).
   virtual bool splats() const { return false; }
+  // Whether Li carries light through the scene's media itself (volpath). The renderer then runs
+  // no volume integrator on top of it, which would count the volume's light twice.
+  virtual bool rendersMedia() const { return false; }
   // Images to write besides the film's once rendering is done (film: the render's, for its pixel
   // bounds and scale).
   virtual std::vector<NamedImage> extraImages(const Film& /*film*/) const { return {}; }

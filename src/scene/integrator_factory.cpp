@@ -6,6 +6,7 @@
 #include "integrators/instant_global_illumination.h"
 #include "integrators/irradiance/irradiance_cache_integrator.h"
 #include "integrators/path.h"
+#include "integrators/volpath.h"
 #include "integrators/whitted.h"
 #include "scene/photon_map_params.h"
 #include "scene/plugin_factories.h"
@@ -175,6 +176,14 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
     return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
   }
   if (desc.name == "path") return std::make_unique<PathIntegrator>(maxDepthParam(desc, false));
+  if (desc.name == "volpath") {
+    // pbrt-v3's VolPathIntegrator parameters and defaults.
+    Float rrThreshold = p.getOneFloat("rrthreshold", 1);
+    if (!(rrThreshold >= 0 && rrThreshold < kInfinity))
+      throw SceneError(p.locationOf("rrthreshold", desc.loc),
+                       "rrthreshold must be >= 0 and finite");
+    return std::make_unique<VolPathIntegrator>(maxDepthParam(desc, false), rrThreshold);
+  }
   if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
   if (desc.name == "ambientocclusion") {
     // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
@@ -204,7 +213,7 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
   throwUnknownPlugin(
       desc.loc, "surface integrator", desc.name,
       {"ambientocclusion", "ao", "bdpt", "bidirectional", "dipolesubsurface", "directlighting",
-       "exphotonmap", "igi", "irradiancecache", "path", "photonmap", "whitted"});
+       "exphotonmap", "igi", "irradiancecache", "path", "photonmap", "volpath", "whitted"});
 }
 
 }  // namespace candela

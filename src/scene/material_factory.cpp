@@ -65,6 +65,8 @@ const Material* MaterialFactory::get(int index) {
     m = createDefaultMaterial(textures_);
   } else {
     const MaterialDesc& md = desc_.materials.at(size_t(index));
+    // pbrt-v3: Material "" or "none" is no material; a shape with it only bounds media.
+    if (md.name.empty() || md.name == "none") return byIndex_[index] = nullptr;
     if (!inProgress_.insert(index).second)
       throw SceneError(md.loc, "material '" + md.name + "' mixes itself (a mix cycle)");
     m = create(md);
@@ -85,7 +87,9 @@ const Material* MaterialFactory::named(const MaterialDesc& d, const std::string&
   auto it = desc_.namedMaterials.find(name);
   if (it == desc_.namedMaterials.end())
     throw SceneError(loc, "mix: unknown named material '" + name + "'");
-  return get(it->second);
+  const Material* m = get(it->second);
+  if (!m) throw SceneError(loc, "mix: named material '" + name + "' is \"none\"");
+  return m;
 }
 
 const Texture<Float>* MaterialFactory::bumpMap(const MaterialDesc& d) {

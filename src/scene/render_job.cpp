@@ -7,6 +7,7 @@
 #include "accel/aggregate_factory.h"
 #include "accel/embree/embree_aggregate.h"
 #include "scene/material_factory.h"
+#include "scene/named_media.h"
 #include "scene/plugin_factories.h"
 #include "scene/shape_factory.h"
 #include "scene/volume_factory.h"
@@ -29,6 +30,7 @@ std::string BuildStats::report() const {
   os << "  materials  " << materials << "\n";
   os << "  textures loaded  " << textures << "\n";
   os << "  volume regions  " << volumeRegions << "\n";
+  os << "  named media  " << namedMedia << " (interfaces " << mediumInterfaces << ")\n";
   os << "  aggregate  " << aggregate.name << "\n";
   for (const auto& [what, n] : aggregate.counts) os << "  " << what << "  " << n << "\n";
   return os.str();
@@ -85,6 +87,7 @@ class MaterialCache {
 void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* noAreaLight,
               MaterialCache& materials, RenderJob& job, std::vector<Primitive>* out,
               const BuildOptions& options) {
+  const MediumInterface* mediumInterface = job.namedMedia->interfaceOf(sd);
   const WarningSink& warn = options.warn;
   CreatedShapes created = createShapes(sd, objectToWorld, *job.textures, options.subdiv);
   reportUnused(sd, warn);
@@ -103,11 +106,30 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* n
       ++job.stats.areaLights;
     }
     ++job.stats.shapesByKind[shape->kind()];
-    out->push_back(Primitive{shape.get(), material, area});
+    out->push_back(Primitive{shape.get(), material, area, mediumInterface});
     job.shapes.push_back(std::move(shape));
   }
   if (sd.areaLight && allowAreaLight) reportUnused(*sd.areaLight, warn);
   if (sd.areaLight && !allowAreaLight && warn) warn(sd.loc, noAreaLight);
+}
+
+// pbrt-v3 media that nothing names, and media the integrator would ignore: never a silent
+// difference from what the scene asks for.
+void warnAboutNamedMedia(const NamedMedia& media, const PluginDesc& integrator, bool imageRenderer,
+                         const WarningSink& warn) {
+  if (!warn) return;
+  std::vector<const MediumDesc*> unused = media.unused();
+  for (const MediumDesc* m : unused)
+    warn(m->loc,
+         "named medium '" + m->mediumName + "' is never used (no MediumInterface names it)");
+  for (const MediumDesc& m : media.description().media)
+    if (std::find(unused.begin(), unused.end(), &m) == unused.end()) reportUnused(m, warn);
+  if (!media.used() || (integrator.name == "volpath" && !imageRenderer)) return;
+  const MediumDesc& first = *media.firstUsed();
+  warn(first.loc, "integrator '" + integrator.name + "' ignores participating media: medium '" +
+                      first.mediumName + "' (named by the MediumInterface at " +
+                      media.firstReferenceLoc().str() +
+                      ") has no effect; use Integrator \"volpath\" to render it");
 }
 
 AnimatedTransform animated(const AnimatedTransformDesc& d) {
@@ -252,14 +274,25 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
            "renderer '" + desc.renderer.name + "' is not available; using the sampler renderer");
     job.integrator =
         createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds());
+    if (job.integrator->rendersMedia() && job.volumeIntegrator) {
+      if (!desc.volumeIntegrator.name.empty() && warn)
+        warn(desc.volumeIntegrator.loc, "VolumeIntegrator '" + desc.volumeIntegrator.name +
+                                            "' is ignored: '" + integratorDesc.name +
+                                            "' carries light through the Volume regions itself");
+      job.volumeIntegrator.reset();
+    }
   }
   reportUnused(integratorDesc, warn);
 
   // Geometry, materials and lights: only what the shapes use.
   MaterialCache materials(desc, job, warn);
+  job.namedMedia = std::make_unique<NamedMedia>(desc);
   addGeometry(desc, materials, job, options);
+  SceneMedia sceneMedia;
   for (const LightDesc& ld : desc.lights) {
     job.lights.push_back(createLight(ld, options.loadImage));
+    if (const Medium* m = job.namedMedia->get(ld.outsideMedium, ld.mediumLoc))
+      sceneMedia.lights.push_back({job.lights.back().get(), m});
     reportUnused(ld, warn);
   }
   job.stats.lights = long(job.lights.size());
@@ -277,6 +310,12 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   std::vector<const Light*> lights;
   for (const auto& l : job.lights) lights.push_back(l.get());
   job.scene = std::make_unique<Scene>(job.aggregate.get(), std::move(lights), job.volume.get());
+  sceneMedia.camera = job.namedMedia->get(desc.camera.medium, desc.camera.mediumLoc);
+  sceneMedia.present = job.namedMedia->used();
+  job.stats.namedMedia = job.namedMedia->createdCount();
+  job.stats.mediumInterfaces = job.namedMedia->interfaceCount();
+  warnAboutNamedMedia(*job.namedMedia, integratorDesc, job.imageRenderer != nullptr, warn);
+  job.scene->setMedia(std::move(sceneMedia));
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
   PreprocessOptions pre;
   pre.seed = options.seed;

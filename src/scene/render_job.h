@@ -31,6 +31,7 @@ namespace candela {
 
 class EmbreeDevice;
 class MaterialFactory;
+class NamedMedia;
 struct TriangleMesh;
 
 using WarningSink = std::function<void(const FileLoc&, const std::string&)>;
@@ -62,6 +63,7 @@ struct BuildStats {
   long materials = 0;
   long textures = 0;
   long volumeRegions = 0;  // pbrt-v2 Volume statements
+  long namedMedia = 0, mediumInterfaces = 0;  // pbrt-v3 media created, shapes' interfaces
   AggregateStats aggregate;
   std::string report() const;
 };
@@ -79,7 +81,8 @@ struct RenderJob {
   std::vector<std::unique_ptr<TriangleMesh>> meshes;
   std::vector<std::unique_ptr<Shape>> shapes;
   std::vector<std::unique_ptr<Light>> lights;
-  SceneGeometry geometry;  // the aggregate's primitives and instances
+  SceneGeometry geometry;                  // the aggregate's primitives and instances
+  std::unique_ptr<NamedMedia> namedMedia;  // pbrt-v3's media and interfaces the scene names
   std::unique_ptr<Aggregate> aggregate;
   std::unique_ptr<Scene> scene;
   // pbrt-v2 Volume regions: the medium filling the scene and the integrator that renders it;

@@ -23,6 +23,18 @@ struct RayStats {
   }
 };
 
+// pbrt-v3's named media as the scene uses them (MakeNamedMedium / MediumInterface); empty in a
+// scene without them. Surfaces carry theirs on their Primitive.
+struct SceneMedia {
+  bool present = false;            // some shape, light or the camera names a medium
+  const Medium* camera = nullptr;  // the medium camera rays start in (null: vacuum)
+  struct LightMedium {
+    const Light* light;
+    const Medium* medium;
+  };
+  std::vector<LightMedium> lights;  // lights (not area lights) that sit in a medium
+};
+
 class Scene {
  public:
   // volume: the medium filling the scene (pbrt-v2's Volume regions, aggregated), null for none.
@@ -44,14 +56,28 @@ class Scene {
   }
   const std::vector<const Light*>& lights() const { return lights_; }
   const Aggregate& aggregate() const { return *aggregate_; }
-  Bounds3f worldBound() const { return aggregate_->worldBound(); }
+  // The geometry's bounds, grown to hold the volume's (pbrt 2e §1.3.1: lights at infinity place
+  // their shadow-ray ends beyond both); an unbounded volume does not grow it.
+  Bounds3f worldBound() const {
+    Bounds3f b = aggregate_->worldBound();
+    if (volume_) {
+      Bounds3f v = volume_->worldBound();
+      Vector3f d = v.diagonal();
+      if (!v.empty() && d.x < kInfinity && d.y < kInfinity && d.z < kInfinity) b = unionOf(b, v);
+    }
+    return b;
+  }
   // The medium that fills the scene (pbrt-v2 `Volume` regions); null when there is none.
   const Medium* volume() const { return volume_; }
+  // pbrt-v3's named media (see SceneMedia); set once by the build.
+  const SceneMedia& media() const { return media_; }
+  void setMedia(SceneMedia media) { media_ = std::move(media); }
 
  private:
   const Aggregate* aggregate_;
   std::vector<const Light*> lights_;
   const Medium* volume_ = nullptr;
+  SceneMedia media_;
 };
 
 }  // namespace candela

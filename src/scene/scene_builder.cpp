@@ -199,6 +199,7 @@ void SceneBuilder::camera(const std::string& name, ParamSet params, const FileLo
   c.cameraToWorld.start = inverse(ctm_[0]);
   c.cameraToWorld.end = inverse(ctm_[1]);
   c.medium = state_.outsideMedium;  // pbrt-v3: the camera is in the current outside medium
+  c.mediumLoc = state_.mediumLoc;
   namedCoordinateSystems_["camera"] = {c.cameraToWorld.start, c.cameraToWorld.end};
   desc_.camera = std::move(c);
 }
@@ -268,9 +269,10 @@ void SceneBuilder::makeNamedMedium(const std::string& name, ParamSet params, con
 }
 
 void SceneBuilder::mediumInterface(const std::string& inside, const std::string& outside,
-                                   const FileLoc&) {
+                                   const FileLoc& loc) {
   state_.insideMedium = inside;
   state_.outsideMedium = outside;
+  state_.mediumLoc = loc;
 }
 
 // ---- World block ---------------------------------------------------------------------------
@@ -425,6 +427,7 @@ void SceneBuilder::lightSource(const std::string& name, ParamSet params, const F
   static_cast<PluginDesc&>(l) = plugin(name, std::move(params), loc);
   l.lightToWorld = animatedCtm();
   l.outsideMedium = state_.outsideMedium;
+  l.mediumLoc = state_.mediumLoc;
   desc_.lights.push_back(std::move(l));
 }
 
@@ -443,6 +446,7 @@ void SceneBuilder::shape(const std::string& name, ParamSet params, const FileLoc
   s.areaLight = state_.areaLight;
   s.insideMedium = state_.insideMedium;
   s.outsideMedium = state_.outsideMedium;
+  s.mediumLoc = state_.mediumLoc;
   if (currentInstance_ >= 0) {
     if (s.areaLight) {
       // pbrt-v3 refuses area lights in instances: one instance would be many lights.

@@ -89,6 +89,7 @@ class SceneBuilder : public ParserTarget {
     std::optional<PluginDesc> areaLight, bumpMap;
     bool reverseOrientation = false;
     std::string insideMedium, outsideMedium;
+    FileLoc mediumLoc;  // of the MediumInterface statement that set them
   };
   enum class PushKind { Attribute, Transform, Object };
   struct Pushed {

@@ -29,6 +29,7 @@ struct PluginDesc {
 struct CameraDesc : PluginDesc {
   AnimatedTransformDesc cameraToWorld;  // the inverse of the CTM at the Camera statement
   std::string medium;                   // pbrt-v3 camera medium ("" = none)
+  FileLoc mediumLoc;                    // the MediumInterface statement that named it
 };
 
 struct MaterialDesc : PluginDesc {
@@ -47,11 +48,13 @@ struct ShapeDesc : PluginDesc {
   int material = -1;                    // index into SceneDescription::materials; -1 = default
   std::optional<PluginDesc> areaLight;  // AreaLightSource in effect
   std::string insideMedium, outsideMedium;
+  FileLoc mediumLoc;  // the MediumInterface statement in effect
 };
 
 struct LightDesc : PluginDesc {
   AnimatedTransformDesc lightToWorld;
   std::string outsideMedium;
+  FileLoc mediumLoc;  // the MediumInterface statement in effect
 };
 
 struct VolumeDesc : PluginDesc {

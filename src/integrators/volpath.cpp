@@ -1,0 +1,257 @@
+#include "integrators/volpath.h"
+
+#include "accel/primitive.h"
+#include "core/rng.h"
+#include "core/sampling.h"
+#include "integrators/specular_differentials.h"
+#include "materials/material.h"
+#include "media/medium_interface.h"
+#include "media/tracking.h"
+
+namespace candela {
+
+namespace {
+
+constexpr int kNonSpecular = kAllBxDF & ~kSpecular;
+// A path or shadow ray crosses at most this many pure interfaces in a row (a guard against a
+// ray stuck on a surface; never reached in a sound scene).
+constexpr int kMaxInterfaceCrossings = 1024;
+
+// The media along a path: the scene-filling pbrt-v2 volume when there is one, else pbrt-v3's
+// named media changing at interfaces.
+struct MediaRules {
+  const Medium* fill;
+  // The medium a ray leaving isect in direction w travels through, coming from `current`.
+  const Medium* after(const SurfaceInteraction& isect, const Vector3f& w,
+                      const Medium* current) const {
+    if (fill) return fill;
+    const MediumInterface* mi = isect.primitive ? isect.primitive->mediumInterface : nullptr;
+    return mi ? mi->entered(w, isect.n) : current;
+  }
+};
+
+// What scatters at a path vertex: a BSDF (f includes |cos θi|) or a phase function.
+struct Scatterer {
+  const BSDF* bsdf = nullptr;
+  PhaseFunction phase;
+  Spectrum f(const Vector3f& wo, const Vector3f& wi) const {
+    if (bsdf) return bsdf->f(wo, wi, kNonSpecular) * absDot(wi, bsdf->shadingNormal());
+    return Spectrum(phase.p(wo, wi));
+  }
+  Float pdf(const Vector3f& wo, const Vector3f& wi) const {
+    return bsdf ? bsdf->pdf(wo, wi, kNonSpecular) : phase.pdf(wo, wi);
+  }
+  Spectrum sample(const Vector3f& wo, Float uComponent, const Point2f& u, Vector3f* wi,
+                  Float* pdf) const {
+    if (bsdf) {
+      BxDFType type;
+      Spectrum f = bsdf->sampleF(wo, wi, uComponent, u, pdf, kNonSpecular, &type);
+      return f * absDot(*wi, bsdf->shadingNormal());
+    }
+    Float ratio = phase.sample(wo, u, wi, pdf);
+    return Spectrum(ratio * *pdf);
+  }
+};
+
+struct PathState {
+  const Scene& scene;
+  MediaRules media;
+  RNG& rng;
+  RayStats& stats;
+};
+
+// Transmittance from `from` to `to` in `medium` (the one the segment starts in), through pure
+// interfaces; 0 when a surface with a material blocks it.
+Spectrum shadowTransmittance(const Interaction& from, const Interaction& to, const Medium* medium,
+                             PathState& s) {
+  Spectrum tr(1);
+  Ray ray = from.spawnRayTo(to);
+  for (int crossing = 0; crossing < kMaxInterfaceCrossings; ++crossing) {
+    SurfaceInteraction isect;
+    bool hit = s.scene.intersect(ray, &isect, s.stats);
+    if (hit && isect.primitive->material) return Spectrum(0);
+    if (medium) tr *= trackedTransmittance(*medium, ray, s.rng);
+    if (!hit) return tr;
+    if (tr.isBlack()) return tr;
+    medium = s.media.after(isect, ray.d, medium);
+    ray = isect.spawnRayTo(to);
+  }
+  return Spectrum(0);
+}
+
+// The radiance `light` sends to `from` along the ray leaving it in direction w (unit), with the
+// transmittance on the way: through pure interfaces (emission of `light` is collected on each,
+// as light sampling sees through them), stopping at the first surface with a material.
+Spectrum lightAlong(const Interaction& from, const Vector3f& w, const Medium* medium,
+                    const Light& light, PathState& s) {
+  Spectrum tr(1), le(0);
+  Ray ray = from.spawnRay(w);
+  for (int crossing = 0; crossing < kMaxInterfaceCrossings; ++crossing) {
+    SurfaceInteraction isect;
+    bool hit = s.scene.intersect(ray, &isect, s.stats);
+    if (medium) tr *= trackedTransmittance(*medium, ray, s.rng);
+    if (tr.isBlack()) return le;
+    if (!hit) return le + tr * light.Le(RayDifferential(ray));
+    const Primitive& prim = *isect.primitive;
+    if (prim.areaLight == &light) le += tr * prim.areaLight->L(isect, -w);
+    if (prim.material) return le;
+    medium = s.media.after(isect, ray.d, medium);
+    ray = isect.spawnRay(ray.d);
+  }
+  return le;
+}
+
+// One light chosen uniformly: a light sample and a BSDF/phase sample combined by the power
+// heuristic (pbrt 3e §14.3.1, §15.3.1), each with its transmittance. shadowMedium(w) is the
+// medium a ray leaving it in direction w starts in.
+template <typename ShadowMedium>
+Spectrum sampleOneLight(const Interaction& it, const Scatterer& scatterer,
+                        const ShadowMedium& shadowMedium, PathState& s, Sampler& sampler) {
+  int nLights = int(s.scene.lights().size());
+  Float uChoice = sampler.get1D();
+  Point2f uLight = sampler.get2D();
+  Point2f uScattering = sampler.get2D();
+  Float uComponent = sampler.get1D();
+  if (nLights == 0) return Spectrum(0);
+  const Light& light = *s.scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
+  Spectrum ld(0);
+  Vector3f wi;
+  Float lightPdf = 0, scatteringPdf = 0;
+  VisibilityTester vis;
+  Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
+  if (lightPdf > 0 && !li.isBlack()) {
+    Spectrum f = scatterer.f(it.wo, wi);
+    if (!f.isBlack()) {
+      Spectrum tr = shadowTransmittance(vis.p0, vis.p1, shadowMedium(wi), s);
+      if (!tr.isBlack()) {
+        Float weight =
+            light.isDelta() ? 1 : powerHeuristic(1, lightPdf, 1, scatterer.pdf(it.wo, wi));
+        ld += f * li * tr * (weight / lightPdf);
+      }
+    }
+  }
+  if (!light.isDelta()) {
+    Spectrum f = scatterer.sample(it.wo, uComponent, uScattering, &wi, &scatteringPdf);
+    if (!f.isBlack() && scatteringPdf > 0) {
+      lightPdf = light.pdfLi(it, wi);
+      if (lightPdf > 0) {
+        Spectrum le = lightAlong(it, wi, shadowMedium(wi), light, s);
+        if (!le.isBlack())
+          ld += f * le * (powerHeuristic(1, scatteringPdf, 1, lightPdf) / scatteringPdf);
+      }
+    }
+  }
+  return ld * Float(nLights);
+}
+
+// A per-path generator for the tracking decisions, seeded from two sampler dimensions (so a
+// function of pixel, sample index and seed).
+RNG pathRng(Sampler& sampler) {
+  uint64_t a = uint64_t(double(sampler.get1D()) * 4294967296.0);
+  uint64_t b = uint64_t(double(sampler.get1D()) * 4294967296.0);
+  return RNG((a << 32) ^ b);
+}
+
+}  // namespace
+
+Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene,
+                               IntegratorContext& ctx, Float* alpha) const {
+  RNG rng = pathRng(ctx.sampler);
+  PathState s{scene, MediaRules{scene.volume()}, rng, ctx.stats};
+  const Medium* medium = scene.volume() ? scene.volume() : scene.media().camera;
+  Spectrum l(0), beta(1);
+  RayDifferential ray(cameraRay);
+  bool specularBounce = false;
+  bool firstSegment = true;
+  *alpha = 0;
+  int bounces = 0;
+  int crossings = 0;  // pure interfaces crossed since the last scattering
+  for (;;) {
+    SurfaceInteraction isect;
+    Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
+    bool hit = scene.intersect(ray, &isect, ctx.stats);
+    FreeFlight flight;
+    if (medium) {
+      flight = sampleFreeFlight(*medium, ray, rng, beta);
+      l += beta * flight.emitted;
+      beta *= flight.weight;
+    }
+    if (firstSegment) *alpha = (hit || flight.scattered) ? 1 : 0;
+    firstSegment = false;
+    if (beta.isBlack()) break;
+
+    if (flight.scattered) {
+      // A real collision in the medium (pbrt 3e §15.3): next-event estimation with the phase
+      // function, then a new direction from it.
+      if (bounces >= maxDepth_) break;
+      Interaction mi(ray(flight.t), ray.time);
+      mi.wo = -normalize(ray.d);
+      Scatterer phase{nullptr, medium->phase(mi.p, ray.time)};
+      const Medium* here = medium;
+      l += beta * sampleOneLight(
+                      mi, phase, [here](const Vector3f&) { return here; }, s, ctx.sampler);
+      Vector3f wi;
+      Float pdf;
+      Float ratio = phase.phase.sample(mi.wo, ctx.sampler.get2D(), &wi, &pdf);
+      if (!(pdf > 0) || ratio == 0) break;
+      beta *= ratio;
+      ray = RayDifferential(mi.spawnRay(wi));
+      specularBounce = false;
+      ++bounces;
+      crossings = 0;
+    } else {
+      // Emission is counted here only where next-event estimation could not have sampled it.
+      if (bounces == 0 || specularBounce) {
+        if (hit) {
+          if (isect.primitive->areaLight) l += beta * isect.primitive->areaLight->L(isect, -ray.d);
+        } else {
+          for (const Light* light : scene.lights()) l += beta * light->Le(ray);
+        }
+      }
+      if (!hit) break;
+      const Primitive& prim = *isect.primitive;
+      if (!prim.material) {
+        // A pure interface: the path goes on unchanged in the medium on the other side.
+        if (++crossings > kMaxInterfaceCrossings) break;
+        medium = s.media.after(isect, ray.d, medium);
+        ray = continueThrough(isect, ray, tMax);
+        continue;
+      }
+      if (bounces >= maxDepth_) break;
+      if (bounces == 0) isect.computeDifferentials(ray);
+      const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
+      Scatterer surface{bsdf, PhaseFunction()};
+      if (bsdf->numComponents(kNonSpecular) > 0) {
+        const Medium* current = medium;
+        const MediaRules& rules = s.media;
+        l += beta * sampleOneLight(
+                        isect, surface,
+                        [&](const Vector3f& w) { return rules.after(isect, w, current); }, s,
+                        ctx.sampler);
+      }
+      Vector3f wi;
+      Float pdf;
+      BxDFType sampledType;
+      Spectrum f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf,
+                                 kAllBxDF, &sampledType);
+      if (f.isBlack() || pdf == 0) break;
+      beta *= f * (absDot(wi, bsdf->shadingNormal()) / pdf);
+      specularBounce = (sampledType & kSpecular) != 0;
+      medium = s.media.after(isect, wi, medium);
+      ray = RayDifferential(isect.spawnRay(wi));
+      ++bounces;
+      crossings = 0;
+    }
+
+    // Russian roulette once the throughput is small (pbrt 3e §14.5.1, volpath's rule).
+    if (bounces > 3 && beta.maxComponent() < rrThreshold_) {
+      Float q = std::max(Float(0.05), 1 - beta.maxComponent());
+      if (ctx.sampler.get1D() < q) break;
+      beta /= 1 - q;
+    }
+    if (!beta.isFinite()) break;
+  }
+  return l;
+}
+
+}  // namespace candela

@@ -1,0 +1,34 @@
+// "volpath": unidirectional path tracing through participating media (pbrt 3e §15.2-15.3).
+// Free flights by delta tracking against the medium's majorant (closed form in homogeneous
+// media), transmittance of shadow rays by ratio tracking across any number of pure interfaces
+// (shapes without a material), next-event estimation at surfaces and in media with multiple
+// importance sampling of the light and the BSDF or phase function (power heuristic), and
+// pbrt-v3's Russian roulette on the throughput below rrthreshold after three bounces.
+//
+// The current medium is tracked per path: it starts as the camera's (SceneMedia::camera) and
+// changes where a path crosses a surface whose Primitive has a MediumInterface. When the scene
+// has pbrt-v2 Volume regions (Scene::volume()), that medium fills all space instead and
+// interfaces do not change it. Tracking draws from a per-path RNG seeded from the sampler, so
+// the image stays a function of (scene, spp, seed).
+#pragma once
+
+#include "integrators/integrator.h"
+
+namespace candela {
+
+class VolPathIntegrator : public SurfaceIntegrator {
+ public:
+  // maxDepth: scattering events (surface or medium) at most; rrThreshold: Russian roulette
+  // starts once the throughput's largest channel falls below it (pbrt-v3's defaults 5 and 1).
+  VolPathIntegrator(int maxDepth, Float rrThreshold)
+      : maxDepth_(maxDepth), rrThreshold_(rrThreshold) {}
+  Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
+              Float* alpha) const override;
+  bool rendersMedia() const override { return true; }
+
+ private:
+  int maxDepth_;
+  Float rrThreshold_;
+};
+
+}  // namespace candela
