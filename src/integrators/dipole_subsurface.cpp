@@ -16,22 +16,29 @@ void DipoleSubsurfaceIntegrator::preprocess(const Scene& scene, const Preprocess
           "renders as \"directlighting\"");
     return;
   }
-  SubsurfacePlacementOptions place;
-  place.minDistance = settings_.minSampleDistance;
-  place.seed = options.seed;
-  place.time = options.shutterOpen;
-  place.nThreads = options.nThreads;
-  SubsurfacePointSet set = placeSubsurfacePoints(scene, place);
+  SubsurfacePointSet set;
+  if (!settings_.givenPoints.empty()) {
+    set.points = settings_.givenPoints;
+    for (const SubsurfacePoint& sp : set.points) set.surfaceArea += sp.area;
+    set.time = options.shutterOpen;
+  } else {
+    SubsurfacePlacementOptions place;
+    place.minDistance = settings_.minSampleDistance;
+    place.seed = options.seed;
+    place.time = options.shutterOpen;
+    place.nThreads = options.nThreads;
+    set = placeSubsurfacePoints(scene, place);
+    if (set.reachedPointLimit && options.warn)
+      options.warn("dipolesubsurface: stopped at " + std::to_string(set.points.size()) +
+                   " sample points; minsampledistance " + std::to_string(place.minDistance) +
+                   " is small for the scene (points cover only part of the surface)");
+  }
   if (set.points.empty()) {
     if (options.warn)
       options.warn(
           "dipolesubsurface: no probe line met a translucent surface; no subsurface light");
     return;
   }
-  if (set.reachedPointLimit && options.warn)
-    options.warn("dipolesubsurface: stopped at " + std::to_string(set.points.size()) +
-                 " sample points; minsampledistance " + std::to_string(place.minDistance) +
-                 " is small for the scene (points cover only part of the surface)");
   // --quick: a quarter of each light's samples.
   computeDirectIrradiance(scene, options.seed, options.nThreads, options.quick ? 0.25f : 1, &set);
   surfaceArea_ = set.surfaceArea;
@@ -43,12 +50,14 @@ void DipoleSubsurfaceIntegrator::preprocess(const Scene& scene, const Preprocess
 
 std::string DipoleSubsurfaceIntegrator::statsReport() const {
   if (octree_.empty()) return {};
+  std::string source =
+      settings_.pointsFile.empty() ? std::string() : " (from " + settings_.pointsFile + ")";
   return "Dipole subsurface scattering\n  sample points  " + std::to_string(octree_.pointCount()) +
-         "\n  translucent surface area  " + std::to_string(surfaceArea_) + "\n  probe lines  " +
-         std::to_string(linesTraced_) + "\n  surface crossings  " + std::to_string(candidates_) +
-         "\n  prepass rays  " + std::to_string(prepassRays_) + "\n  octree nodes  " +
-         std::to_string(octree_.nodeCount()) + "\n  octree and point bytes  " +
-         std::to_string(octree_.memoryBytes()) + "\n";
+         source + "\n  translucent surface area  " + std::to_string(surfaceArea_) +
+         "\n  probe lines  " + std::to_string(linesTraced_) + "\n  surface crossings  " +
+         std::to_string(candidates_) + "\n  prepass rays  " + std::to_string(prepassRays_) +
+         "\n  octree nodes  " + std::to_string(octree_.nodeCount()) +
+         "\n  octree and point bytes  " + std::to_string(octree_.memoryBytes()) + "\n";
 }
 
 Spectrum DipoleSubsurfaceIntegrator::directLight(const SurfaceInteraction& isect, const BSDF& bsdf,

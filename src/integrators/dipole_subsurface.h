@@ -6,14 +6,17 @@
 // translucent surface (subsurface_points.h), summed hierarchically (subsurface_octree.h). E_i is
 // the irradiance before the boundary; 1 - Fdr is the diffuse transmittance that lets it in, as in
 // pbrt-v2. E_i is direct light only (no indirect bounce into the samples).
-// Parameters (pbrt-v2's): maxdepth 5, maxerror .05, minsampledistance .25; pointsfile is not
-// supported (a located error).
+// Parameters (pbrt-v2's): maxdepth 5, maxerror .05, minsampledistance .25, and pointsfile: sample
+// points given instead of placed (pbrt-v2's format, see scene/integrator_factory.cpp).
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "integrators/specular_recursion.h"
 #include "integrators/subsurface_octree.h"
+#include "integrators/subsurface_points.h"
 
 namespace candela {
 
@@ -21,6 +24,9 @@ struct DipoleSubsurfaceSettings {
   int maxDepth = 5;
   Float maxError = 0.05f;
   Float minSampleDistance = 0.25f;
+  // Points read from pointsfile (irradiance zero): used instead of placing points when not empty.
+  std::vector<SubsurfacePoint> givenPoints;
+  std::string pointsFile;  // where they came from, for --stats
 };
 
 class DipoleSubsurfaceIntegrator : public SpecularRecursionIntegrator {

@@ -1,7 +1,7 @@
 // The named scattering media pbrt-v2's "subsurface" material accepts through "string name"
 // (pbrt 2e §16.5): the measurements of Jensen, Marschner, Levoy and Hanrahan 2001, "A Practical
-// Model for Subsurface Light Transport", Table 1, in mm^-1 (the material's "scale" converts to
-// scene units).
+// Model for Subsurface Light Transport", Table 1, and pbrt-v2's 35 media from Narasimhan et al.
+// 2006, in mm^-1 (the material's "scale" converts to scene units).
 #pragma once
 
 #include <optional>

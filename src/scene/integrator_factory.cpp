@@ -8,8 +8,10 @@
 #include "integrators/path.h"
 #include "integrators/volpath.h"
 #include "integrators/whitted.h"
+#include "scene/number_file.h"
 #include "scene/photon_map_params.h"
 #include "scene/plugin_factories.h"
+#include "scene/scene_path.h"
 
 namespace candela {
 
@@ -134,6 +136,42 @@ std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Came
   return std::make_unique<BdptIntegrator>(*importance, maxDepth, choice, visualize, pixelBounds);
 }
 
+// dipolesubsurface's pointsfile, in pbrt-v2's format: eight numbers per point — position (3),
+// normal (3), area, and a ray offset — in world space. Unlike pbrt-v2, which warns and drops
+// them, values left over past the last whole point, a zero normal, a negative area or offset, and
+// a file without points are errors.
+std::vector<SubsurfacePoint> readSubsurfacePointsFile(const std::string& path, const FileLoc& loc) {
+  std::vector<double> v;
+  try {
+    v = readNumberFile(path);
+  } catch (const FileError& e) {
+    throw SceneError(loc, std::string("dipolesubsurface: cannot read pointsfile: ") + e.what());
+  }
+  auto fail = [&](const std::string& what) {
+    throw SceneError(loc, "dipolesubsurface: pointsfile '" + path + "': " + what);
+  };
+  if (v.empty()) fail("no points");
+  if (v.size() % 8 != 0)
+    fail(std::to_string(v.size()) + " values, not a multiple of 8 (x y z nx ny nz area offset)");
+  std::vector<SubsurfacePoint> points;
+  points.reserve(v.size() / 8);
+  for (size_t i = 0; i < v.size(); i += 8) {
+    SubsurfacePoint sp;
+    sp.p = Point3f(Float(v[i]), Float(v[i + 1]), Float(v[i + 2]));
+    Normal3f n(Float(v[i + 3]), Float(v[i + 4]), Float(v[i + 5]));
+    Float area = Float(v[i + 6]), offset = Float(v[i + 7]);
+    std::string which = "point " + std::to_string(i / 8 + 1) + ": ";
+    if (!(n.lengthSquared() > 0)) fail(which + "zero normal");
+    if (!(area >= 0)) fail(which + "negative area");
+    if (!(offset >= 0)) fail(which + "negative ray offset");
+    sp.n = normalize(n);
+    sp.area = area;
+    sp.pError = Vector3f(offset, offset, offset);
+    points.push_back(sp);
+  }
+  return points;
+}
+
 // pbrt-v2's "dipolesubsurface" (pbrt 2e §16.5).
 std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc) {
   const ParamSet& p = desc.params;
@@ -146,10 +184,12 @@ std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc
   if (!(s.minSampleDistance > 0 && s.minSampleDistance < kInfinity))
     throw SceneError(p.locationOf("minsampledistance", desc.loc),
                      "minsampledistance must be > 0 and finite");
-  if (p.find("pointsfile"))
-    throw SceneError(p.locationOf("pointsfile", desc.loc),
-                     "dipolesubsurface: \"pointsfile\" (pbrt-v2's precomputed sample points) is "
-                     "not supported; remove it and the points are placed at preprocess time");
+  std::string pointsFile = p.getOneString("pointsfile", "");
+  if (!pointsFile.empty()) {
+    FileLoc loc = p.locationOf("pointsfile", desc.loc);
+    s.pointsFile = resolveScenePath(pointsFile, loc.file);
+    s.givenPoints = readSubsurfacePointsFile(s.pointsFile, loc);
+  }
   return std::make_unique<DipoleSubsurfaceIntegrator>(s);
 }
 

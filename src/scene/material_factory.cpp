@@ -16,6 +16,7 @@
 #include "materials/translucent.h"
 #include "materials/uber.h"
 #include "scene/plugin_factories.h"
+#include "scene/scene_path.h"
 #include "scene/spectrum_input.h"
 #include "scene/subsurface_material_params.h"
 #include "textures/solid_textures.h"
@@ -30,14 +31,6 @@ const std::vector<std::string> kMaterialNames = {
 // Named in the draft (§10.9) without coefficients.
 const std::set<std::string> kUnprintedFits = {"felt", "primer", "skin", "bluepaint",
                                               "brushedmetal"};
-
-std::string resolvePath(const std::string& filename, const std::string& sceneFile) {
-  namespace fs = std::filesystem;
-  fs::path p(filename);
-  if (p.is_absolute() || sceneFile.empty() || sceneFile == "-")
-    return p.lexically_normal().string();
-  return (fs::path(sceneFile).parent_path() / p).lexically_normal().string();
-}
 
 // Height fields of lrt's BumpMap statement (lrt draft Appendix C), scaled by "scale".
 class ScaledFloatTexture : public Texture<Float> {
@@ -122,7 +115,7 @@ std::unique_ptr<Material> MaterialFactory::measured(const MaterialDesc& d,
   std::string filename = d.params.getOneString("filename", "");
   if (filename.empty()) throw SceneError(d.loc, "measured needs \"string filename\"");
   FileLoc loc = d.params.locationOf("filename", d.loc);
-  std::string path = resolvePath(filename, loc.file);
+  std::string path = resolveScenePath(filename, loc.file);
   try {
     if (auto it = merl_.find(path); it != merl_.end())
       return std::make_unique<MeasuredMaterial>(it->second, bump);

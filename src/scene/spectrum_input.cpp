@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "core/cie_data.h"
 #include "core/error.h"
+#include "scene/number_file.h"
 
 namespace candela {
 
@@ -181,41 +178,7 @@ Spectrum blackbodyToRGB(Float kelvin, Float scale) {
 }
 
 std::vector<SpectrumSample> readSpectrumFile(const std::string& path) {
-  if (path.find('\0') != std::string::npos)
-    throw FileError(path.substr(0, path.find('\0')), "NUL in file name");
-  // Only regular files: a device such as /dev/zero would never end.
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw FileError(path,
-                    std::filesystem::exists(path, ec) ? "not a regular file" : "no such file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open spectrum file");
-  std::vector<double> numbers;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-    size_t i = 0;
-    while (i < line.size()) {
-      char ch = line[i];
-      if (ch == ' ' || ch == '\t' || ch == '\r' || ch == ',' || ch == '\f' || ch == '\v') {
-        ++i;
-        continue;
-      }
-      size_t end = i;
-      while (end < line.size() && !std::strchr(" \t\r,\f\v", line[end])) ++end;
-      const char* first = line.data() + i + (line[i] == '+' ? 1 : 0);
-      double v = 0;
-      auto [ptr, ec] = std::from_chars(first, line.data() + end, v);
-      if (ec != std::errc() || ptr != line.data() + end || !(std::abs(v) <= 3.4e38))
-        throw FileError(path, "line " + std::to_string(lineNo) + ": expected a number, found '" +
-                                  line.substr(i, std::min<size_t>(end - i, 40)) + "'");
-      numbers.push_back(v);
-      i = end;
-    }
-  }
-  if (in.bad()) throw FileError(path, "read error");
+  std::vector<double> numbers = readNumberFile(path);
   if (numbers.empty()) throw FileError(path, "spectrum file has no values");
   if (numbers.size() % 2 != 0)
     throw FileError(path, "spectrum file has an odd number of values (" +

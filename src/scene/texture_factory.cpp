@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <type_traits>
 
+#include "scene/scene_path.h"
 #include "textures/basic_textures.h"
 #include "textures/checkerboard.h"
 #include "textures/dots.h"
@@ -33,16 +34,6 @@ T getOne(const ParamSet& params, const std::string& name, const T& def) {
 [[noreturn]] void spectrumOnly(const TextureDesc& d) {
   throw SceneError(d.loc, "texture class '" + d.name + "' makes spectrum textures only, but '" +
                               d.textureName + "' is declared \"float\"");
-}
-
-// filename relative to the directory of the scene file that named it ("-", standard input, and
-// an empty name leave it relative to the working directory).
-std::string resolvePath(const std::string& filename, const std::string& sceneFile) {
-  namespace fs = std::filesystem;
-  fs::path p(filename);
-  if (p.is_absolute() || sceneFile.empty() || sceneFile == "-")
-    return p.lexically_normal().string();
-  return (fs::path(sceneFile).parent_path() / p).lexically_normal().string();
 }
 
 }  // namespace
@@ -210,7 +201,7 @@ std::unique_ptr<Texture<T>> TextureFactory::createImageTexture(const TextureDesc
   std::string filename = p.getOneString("filename", "");
   if (filename.empty())
     throw SceneError(d.loc, "imagemap texture '" + d.textureName + "' needs a \"string filename\"");
-  std::string path = resolvePath(filename, p.locationOf("filename", d.loc).file);
+  std::string path = resolveScenePath(filename, p.locationOf("filename", d.loc).file);
   std::string colorSpace = p.getOneString("colorspace", "");
   std::string wrapName = p.getOneString("wrap", "repeat");
   std::optional<WrapMode> wrap = parseWrapMode(wrapName);

@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
+
+#include "core/error.h"
 
 #include "support/render_scene.h"
 
@@ -82,6 +85,110 @@ TEST(DipoleSubsurfaceRenders, KdSubsurfaceUnderAUniformSkyReturnsKd) {
     double mean = sum / 16, expected = 0.9984 * kd[c];
     // Curvature, the point spacing and the irradiance samples: within 5 %.
     EXPECT_NEAR(mean, expected, 0.05 * expected) << "channel " << c;
+  }
+}
+
+// A file in a fresh temporary directory, removed with it.
+class TempFile {
+ public:
+  TempFile(const std::string& name, const std::string& text) {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("candela-dipole-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+            "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+    path_ = (dir_ / name).string();
+    std::ofstream(path_) << text;
+  }
+  ~TempFile() { std::filesystem::remove_all(dir_); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::filesystem::path dir_;
+  std::string path_;
+};
+
+// pbrt-v2's pointsfile: the same sky test with the points given instead of placed — a Fibonacci
+// lattice on the unit sphere, each point a 1/n share of its area, eight numbers per point
+// (position, normal, area, ray offset) with comments and commas as pbrt-v2's reader allows.
+TEST(DipoleSubsurfaceRenders, PointsFromAPointsFileUnderAUniformSkyReturnKd) {
+  const int n = 12000;
+  std::ostringstream points;
+  points.precision(9);
+  points << "# x y z nx ny nz area offset\n";
+  const double golden = kPi * (3 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    double z = 1 - (i + 0.5) * 2 / n, r = std::sqrt(1 - z * z), phi = golden * i;
+    double x = r * std::cos(phi), y = r * std::sin(phi);
+    points << x << " " << y << " " << z << ", " << x << " " << y << " " << z << " " << 4 * kPi / n
+           << " 1e-4\n";
+  }
+  TempFile file("sphere points.txt", points.str());
+  std::string warnings;
+  test::TestRenderOptions o;
+  o.build.warn = [&](const FileLoc&, const std::string& m) { warnings += m + "\n"; };
+  auto r = test::renderSceneText(
+      sphereScene("\"dipolesubsurface\" \"string pointsfile\" \"" + file.path() + "\"",
+                  "\"kdsubsurface\" \"rgb Kd\" [.2 .5 .8] \"float meanfreepath\" [0.05] "
+                  "\"float index\" [1]",
+                  "LightSource \"infinite\" \"rgb L\" [1 1 1] \"integer nsamples\" [16]", 16),
+      o);
+  EXPECT_EQ(warnings, "");
+  std::string stats = r.job().integrator->statsReport();
+  EXPECT_NE(stats.find("sample points  12000 (from " + file.path() + ")"), std::string::npos)
+      << stats;
+  ImageBuffer img = r.film().image();
+  const double kd[3] = {0.2, 0.5, 0.8};
+  for (int c = 0; c < 3; ++c) {
+    double sum = 0;
+    for (int y = 6; y < 10; ++y)
+      for (int x = 6; x < 10; ++x) sum += img.at(x, y, c);
+    double mean = sum / 16, expected = 0.9984 * kd[c];
+    EXPECT_NEAR(mean, expected, 0.05 * expected) << "channel " << c;
+  }
+  // The points are what lights the sphere: a file holding only the far side's leaves the
+  // centre dark.
+  std::ostringstream far;
+  far.precision(9);
+  for (int i = 0; i < n; ++i) {
+    double z = 1 - (i + 0.5) * 2 / n, rr = std::sqrt(1 - z * z), phi = golden * i;
+    if (z < 0.5) continue;  // the camera looks along +z from z = -5: keep the back only
+    far << rr * std::cos(phi) << " " << rr * std::sin(phi) << " " << z << " " << rr * std::cos(phi)
+        << " " << rr * std::sin(phi) << " " << z << " " << 4 * kPi / n << " 1e-4\n";
+  }
+  TempFile farFile("far.txt", far.str());
+  ImageBuffer dark =
+      test::renderSceneText(
+          sphereScene("\"dipolesubsurface\" \"string pointsfile\" \"" + farFile.path() + "\"",
+                      "\"kdsubsurface\" \"rgb Kd\" [.2 .5 .8] \"float "
+                      "meanfreepath\" [0.05] \"float index\" [1]",
+                      "LightSource \"infinite\" \"rgb L\" [1 1 1]", 16))
+          .film()
+          .image();
+  EXPECT_LT(dark.at(8, 8, 2), 0.01);
+}
+
+// Bad pointsfiles: located errors that say what is wrong with which file.
+TEST(DipoleSubsurfaceRenders, BadPointsFilesAreLocatedErrors) {
+  struct Case {
+    std::string text, mentions;
+  };
+  for (const Case& c : std::vector<Case>{{"0 0 0 0 0 1 0.1", "multiple of 8"},
+                                         {"0 0 0  0 0 0  0.1 0", "zero normal"},
+                                         {"0 0 0  0 0 1  -0.1 0", "negative area"},
+                                         {"0 0 0  0 0 1  0.1 x", "line 1: expected a number"},
+                                         {"# nothing\n", "no points"}}) {
+    TempFile file("points.txt", c.text);
+    std::string scene =
+        sphereScene("\"dipolesubsurface\"\n  \"string pointsfile\" \"" + file.path() + "\"", kSkin,
+                    kPointLight);
+    try {
+      test::buildSceneText(scene);
+      ADD_FAILURE() << "no error for " << c.text;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.location().line, 6) << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.mentions), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(file.path()), std::string::npos) << e.what();
+    }
   }
 }
 

@@ -46,7 +46,7 @@ void expectLocatedError(const std::string& material, const std::string& paramete
   }
 }
 
-TEST(SubsurfaceMaterials, MeasuredNamesResolveToJensensTable) {
+TEST(SubsurfaceMaterials, MeasuredNamesResolveToPbrtV2sTable) {
   std::vector<std::string> names = measuredSubsurfaceNames();
   for (const char* n : {"Apple", "Chicken1", "Chicken2", "Cream", "Ketchup", "Marble", "Potato",
                         "Skimmilk", "Skin1", "Skin2", "Spectralon", "Wholemilk"}) {
@@ -60,6 +60,17 @@ TEST(SubsurfaceMaterials, MeasuredNamesResolveToJensensTable) {
   EXPECT_FLOAT_EQ(c.sigmaPrimeS[2], 0.06f);
   EXPECT_FLOAT_EQ(c.sigmaA[1], 1.94f);
   EXPECT_FLOAT_EQ(c.eta, 1.33f);
+  // pbrt-v2's additions from Narasimhan et al. 2006, names with spaces and '&' included.
+  EXPECT_EQ(names.size(), 47u);
+  for (const char* n : {"Lowfat Milk", "Espresso", "Coke", "Merlot", "Head & Shoulders Shampoo",
+                        "Pacific Ocean Surface Water"})
+    EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
+  c = coefficientsOf("subsurface", "\"string name\" \"Head & Shoulders Shampoo\"");
+  EXPECT_FLOAT_EQ(c.sigmaPrimeS[1], 0.4527f);
+  EXPECT_FLOAT_EQ(c.sigmaA[2], 0.2125f);
+  c = coefficientsOf("subsurface", "\"string name\" \"Pacific Ocean Surface Water\"");
+  EXPECT_FLOAT_EQ(c.sigmaPrimeS[0], 3.3645f);
+  EXPECT_FLOAT_EQ(c.sigmaA[0], 3.1845f);
   // An explicit coefficient wins over the named medium's.
   c = coefficientsOf("subsurface", "\"string name\" \"Ketchup\" \"rgb sigma_a\" [1 2 3]");
   EXPECT_FLOAT_EQ(c.sigmaA[2], 3);

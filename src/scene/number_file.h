@@ -1,0 +1,16 @@
+// Files of numbers that scenes name (pbrt-v2's ReadFloatFile format): decimal numbers separated
+// by white space or commas, '#' starting a comment to the end of the line. Used by spectrum
+// files (wavelength-value pairs) and dipolesubsurface's pointsfile.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// Every number of the file at path, in order. Throws FileError (naming the path, and the line
+// for a token that is not a finite number) when the file is missing, not a regular file, or
+// unreadable.
+std::vector<double> readNumberFile(const std::string& path);
+
+}  // namespace candela
