@@ -66,6 +66,20 @@ TEST(DipoleSubsurfaceRenders, FiniteAndDeterministicForOneAndTwoThreads) {
   EXPECT_GT(meanOf(one, 0), meanOf(one, 2));
 }
 
+// The central 4 x 4 pixels of a 16 x 16 render, where the sphere faces the camera, against
+// (1 - Fdr) Kd for Kd (.2 .5 .8) and eta 1 (see below).
+void expectCentreIsKd(const ImageBuffer& img) {
+  const double kd[3] = {0.2, 0.5, 0.8};
+  for (int c = 0; c < 3; ++c) {
+    double sum = 0;
+    for (int y = 6; y < 10; ++y)
+      for (int x = 6; x < 10; ++x) sum += img.at(x, y, c);
+    double mean = sum / 16, expected = 0.9984 * kd[c];
+    // Curvature, the point spacing and the irradiance samples: within 5 %.
+    EXPECT_NEAR(mean, expected, 0.05 * expected) << "channel " << c;
+  }
+}
+
 TEST(DipoleSubsurfaceRenders, KdSubsurfaceUnderAUniformSkyReturnsKd) {
   // eta 1: no specular reflection, Fdr = 0.0016. A sphere much larger than the mean free path
   // under a sky of radiance 1 is nearly a lit half-space: E = pi everywhere, and the dipole
@@ -76,16 +90,7 @@ TEST(DipoleSubsurfaceRenders, KdSubsurfaceUnderAUniformSkyReturnsKd) {
                   "\"float index\" [1]",
                   "LightSource \"infinite\" \"rgb L\" [1 1 1] \"integer nsamples\" [16]", 16);
   ImageBuffer img = render(scene, 0);
-  // The central 4 x 4 pixels, where the sphere faces the camera.
-  const double kd[3] = {0.2, 0.5, 0.8};
-  for (int c = 0; c < 3; ++c) {
-    double sum = 0;
-    for (int y = 6; y < 10; ++y)
-      for (int x = 6; x < 10; ++x) sum += img.at(x, y, c);
-    double mean = sum / 16, expected = 0.9984 * kd[c];
-    // Curvature, the point spacing and the irradiance samples: within 5 %.
-    EXPECT_NEAR(mean, expected, 0.05 * expected) << "channel " << c;
-  }
+  expectCentreIsKd(img);
 }
 
 // A file in a fresh temporary directory, removed with it.
@@ -137,14 +142,7 @@ TEST(DipoleSubsurfaceRenders, PointsFromAPointsFileUnderAUniformSkyReturnKd) {
   EXPECT_NE(stats.find("sample points  12000 (from " + file.path() + ")"), std::string::npos)
       << stats;
   ImageBuffer img = r.film().image();
-  const double kd[3] = {0.2, 0.5, 0.8};
-  for (int c = 0; c < 3; ++c) {
-    double sum = 0;
-    for (int y = 6; y < 10; ++y)
-      for (int x = 6; x < 10; ++x) sum += img.at(x, y, c);
-    double mean = sum / 16, expected = 0.9984 * kd[c];
-    EXPECT_NEAR(mean, expected, 0.05 * expected) << "channel " << c;
-  }
+  expectCentreIsKd(img);
   // The points are what lights the sphere: a file holding only the far side's leaves the
   // centre dark.
   std::ostringstream far;
