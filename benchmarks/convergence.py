@@ -30,13 +30,22 @@ SCENES = {"cornell-box": "scenes/cornell-box/cornell-box.pbrt",
           "spheres": "scenes/spheres/spheres.pbrt",
           # pbrt-v3 media: only "volpath" renders them (run with --scenes smoke
           # --methods volpath/random,volpath/stratified; the other integrators ignore media).
-          "smoke": "scenes/smoke/smoke.pbrt"}
+          "smoke": "scenes/smoke/smoke.pbrt",
+          # pbrt-v2 Volume regions (homogeneous fog; the smoke as a volumegrid): "single" against
+          # "volpath1", volpath limited to one scattering event, which estimates the same image
+          # (run with --scenes fog,smoke-grid --methods single/stratified,volpath1/stratified).
+          "fog": "scenes/fog/fog.pbrt",
+          "smoke-grid": "scenes/smoke-grid/smoke-grid.pbrt"}
 # Each scene's size, for the parameters given in scene units (the photon search radius).
-SCENE_SIZE = {"cornell-box": 550, "caustic": 16, "indirect-room": 10, "spheres": 10, "smoke": 10}
+SCENE_SIZE = {"cornell-box": 550, "caustic": 16, "indirect-room": 10, "spheres": 10, "smoke": 10,
+              "fog": 10, "smoke-grid": 10}
 DEFAULT_SCENES = ["cornell-box", "caustic", "indirect-room"]
 # The method that renders each scene's reference: path tracing, except where it converges too
 # slowly to serve (the caustic of a small light seen through glass: bidirectional).
-REFERENCE_METHOD = {"caustic": "bdpt", "smoke": "volpath"}
+REFERENCE_METHOD = {"caustic": "bdpt", "smoke": "volpath", "fog": "volpath1",
+                    "smoke-grid": "volpath1"}
+# "single"'s ray-marching step, in scene units (the scene files' own).
+SINGLE_STEP = {"fog": 0.1, "smoke-grid": 0.02}
 # Every method at its scene-file defaults except the depth of the unbiased ones, which matches the
 # reference's (deep enough that Russian roulette, not the limit, ends the paths), and the photon
 # radii, in scene units: photonmap's maxdist a hundredth of the scene, SPPM's initial radius about
@@ -44,6 +53,10 @@ REFERENCE_METHOD = {"caustic": "bdpt", "smoke": "volpath"}
 # iterations; it takes no Sampler, so one sampler suffices.
 INTEGRATORS = {"path": '"path" "integer maxdepth" [100]',
                "volpath": '"volpath" "integer maxdepth" [100]',
+               "volpath1": '"volpath" "integer maxdepth" [1]',
+               # pbrt-v2's pair for Volume regions: surfaces lit directly, the volume by single
+               # scattering.
+               "single": '"directlighting"\nVolumeIntegrator "single" "float stepsize" [{step}]',
                "directlighting": '"directlighting"',
                "bdpt": '"bdpt" "integer maxdepth" [100]',
                "photonmap": '"photonmap" "float maxdist" [{maxdist}]',
@@ -54,7 +67,7 @@ INTEGRATORS = {"path": '"path" "integer maxdepth" [100]',
                # leaves out light of more than 8 bounces that the reference has.
                "mlt": '"mlt" "integer maxdepth" [8]'}
 SPPM_RADIUS = {"cornell-box": 8, "caustic": 0.2, "indirect-room": 0.2, "spheres": 0.2,
-               "smoke": 0.2}
+               "smoke": 0.2, "fog": 0.2, "smoke-grid": 0.2}
 SAMPLERS = {"stratified": '"stratified"', "random": '"random"'}
 DEFAULT_METHODS = ["path/stratified", "path/random", "directlighting/stratified",
                    "bdpt/stratified", "photonmap/stratified", "irradiancecache/stratified",
@@ -63,12 +76,19 @@ DEFAULT_METHODS = ["path/stratified", "path/random", "directlighting/stratified"
 
 def integrator_statement(integrator, scene):
     return "SurfaceIntegrator " + INTEGRATORS[integrator].format(
-        maxdist=SCENE_SIZE[scene] / 100, radius=SPPM_RADIUS[scene])
+        maxdist=SCENE_SIZE[scene] / 100, radius=SPPM_RADIUS[scene],
+        step=SINGLE_STEP.get(scene, 1))
+
+
+def with_integrator(scene_text, integrator, scene):
+    """The scene with its (Surface/Volume)Integrator statements replaced by the method's."""
+    s = re.sub(r'^VolumeIntegrator [^\n]*\n', "", scene_text, flags=re.M)
+    return re.sub(r'^(Surface)?Integrator .*$', lambda m: integrator_statement(integrator, scene), s,
+                  flags=re.M)
 
 
 def variant(scene_text, integrator, sampler, scene):
-    s = re.sub(r'^(Surface)?Integrator .*$', integrator_statement(integrator, scene), scene_text,
-               flags=re.M)
+    s = with_integrator(scene_text, integrator, scene)
     return re.sub(r'^Sampler [^\n]*$', "Sampler " + SAMPLERS[sampler], s, flags=re.M)
 
 
@@ -143,8 +163,7 @@ def main():
         # cache.
         ref_scene = os.path.join(os.path.dirname(scene_path), f".{name}-reference.pbrt")
         with open(ref_scene, "w") as f:
-            f.write(re.sub(r'^(Surface)?Integrator .*$', integrator_statement(REFERENCE_METHOD.get(name, "path"), name), text,
-                           flags=re.M))
+            f.write(with_integrator(text, REFERENCE_METHOD.get(name, "path"), name))
         try:
             ref = subprocess.run([os.path.join(ROOT, "tools", "reference.sh"), ref_scene,
                                   str(args.ref_spp), "1000"] + quick, env=env, check=True,
