@@ -80,6 +80,11 @@ class SurfaceIntegrator {
   // Whether Li carries light through the scene's media itself (volpath). The renderer then runs
   // no volume integrator on top of it, which would count the volume's light twice.
   virtual bool rendersMedia() const { return false; }
+  // Whether every ray Li traces between two points is attenuated by pbrt-v2 Volume regions
+  // (through volumeTransmittance), not only its camera ray (the renderer's) and its direct
+  // lighting; the scene build warns for integrators that do not (photons, gather rays, light
+  // subpaths would cross the volume unattenuated).
+  virtual bool attenuatesEveryRay() const { return rendersMedia(); }
   // Images to write besides the film's once rendering is done (film: the render's, for its pixel
   // bounds and scale).
   virtual std::vector<NamedImage> extraImages(const Film& /*film*/) const { return {}; }

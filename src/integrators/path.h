@@ -9,6 +9,7 @@ namespace candela {
 
 class PathIntegrator : public SurfaceIntegrator {
  public:
+  bool attenuatesEveryRay() const override { return true; }
   explicit PathIntegrator(int maxDepth, int rrStartDepth = 3)
       : maxDepth_(maxDepth), rrStartDepth_(rrStartDepth) {}
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,

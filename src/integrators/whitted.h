@@ -10,6 +10,7 @@ namespace candela {
 
 class WhittedIntegrator : public SpecularRecursionIntegrator {
  public:
+  bool attenuatesEveryRay() const override { return true; }
   explicit WhittedIntegrator(int maxDepth) : SpecularRecursionIntegrator(maxDepth) {}
 
  protected:

@@ -274,6 +274,13 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
            "renderer '" + desc.renderer.name + "' is not available; using the sampler renderer");
     job.integrator =
         createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds());
+    if (job.volume && !job.integrator->attenuatesEveryRay() && warn)
+      warn(desc.volumes.front().loc,
+           "Volume regions attenuate only the camera rays and direct lighting of integrator '" +
+               integratorDesc.name +
+               "'; its other rays (photons, gather and occlusion rays, light subpaths) cross them "
+               "unattenuated "
+               "(\"path\" or \"volpath\" carry the volume's full effect)");
     if (job.integrator->rendersMedia() && job.volumeIntegrator) {
       if (!desc.volumeIntegrator.name.empty() && warn)
         warn(desc.volumeIntegrator.loc, "VolumeIntegrator '" + desc.volumeIntegrator.name +

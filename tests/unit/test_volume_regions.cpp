@@ -274,5 +274,29 @@ TEST(VolumeRegions, StatementsUseTheirTransformAndPhaseSelection) {
   }
 }
 
+// Integrators whose photons, gather rays or light subpaths cross the volume unattenuated say so
+// at the Volume statement; those that attenuate every ray (and volpath) do not.
+TEST(VolumeRegions, IntegratorsThatAttenuateOnlyPartOfTheirRaysWarn) {
+  auto warningsFor = [](const std::string& integrator) {
+    std::string warnings;
+    BuildOptions options;
+    options.warn = [&](const FileLoc& loc, const std::string& m) {
+      warnings += std::to_string(loc.line) + ": " + m + "\n";
+    };
+    test::buildSceneText("SurfaceIntegrator " + integrator + "\n" +
+                             volumeScene("Volume \"homogeneous\"", "\"rgb sigma_s\" [1 1 1]"),
+                         options);
+    return warnings;
+  };
+  for (const char* partial :
+       {"\"bdpt\"", "\"photonmap\"", "\"irradiancecache\"", "\"igi\"", "\"ambientocclusion\""}) {
+    std::string w = warningsFor(partial);
+    EXPECT_NE(w.find("4: Volume regions attenuate only the camera rays"), std::string::npos)
+        << partial << ": " << w;
+  }
+  for (const char* full : {"\"path\"", "\"directlighting\"", "\"whitted\"", "\"volpath\""})
+    EXPECT_EQ(warningsFor(full).find("Volume regions attenuate only"), std::string::npos) << full;
+}
+
 }  // namespace
 }  // namespace candela
