@@ -14,13 +14,17 @@ InfiniteAreaLight::InfiniteAreaLight(const Transform& lightToWorld, const Spectr
     return;
   }
   // Luminance times sin θ at the row's centre: the solid angle a texel of that row covers is
-  // proportional to it (§15.4), so bright texels near the poles are not oversampled.
+  // proportional to it (§15.4), so bright texels near the poles are not oversampled. The radiance
+  // inside a texel's cell is interpolated from it and its eight neighbours, so the cell gets their
+  // largest luminance: wherever the sky is not black, the pdf is not zero.
   std::vector<Float> func(map_.texels.size());
   for (int j = 0; j < map_.height; ++j) {
     Float sinTheta = std::sin(kPi * (j + Float(0.5)) / map_.height);
     for (int i = 0; i < map_.width; ++i) {
-      size_t k = size_t(j) * size_t(map_.width) + size_t(i);
-      func[k] = std::max(Float(0), map_.texels[k].y()) * sinTheta;
+      Float largest = 0;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) largest = std::max(largest, texel(i + di, j + dj).y());
+      func[size_t(j) * size_t(map_.width) + size_t(i)] = largest * sinTheta;
     }
   }
   distribution_ = std::make_unique<Distribution2D>(func, map_.width, map_.height);
@@ -28,6 +32,24 @@ InfiniteAreaLight::InfiniteAreaLight(const Transform& lightToWorld, const Spectr
 
 void InfiniteAreaLight::preprocess(const Bounds3f& sceneBounds) {
   sceneBounds.boundingSphere(&sceneCenter_, &sceneRadius_);
+}
+
+const Spectrum& InfiniteAreaLight::texel(int i, int j) const {
+  i %= map_.width;
+  if (i < 0) i += map_.width;
+  j = clamp(j, 0, map_.height - 1);
+  return map_.texels[size_t(j) * size_t(map_.width) + size_t(i)];
+}
+
+// Bilinear between the four nearest texel centres, as pbrt-v2 and pbrt-v3 look their maps up
+// (pbrt 2e §14.6.1, pbrt 3e §12.6): periodic in φ, clamped at the poles.
+Spectrum InfiniteAreaLight::interpolated(const Point2f& st) const {
+  Float x = st.x * map_.width - Float(0.5), y = st.y * map_.height - Float(0.5);
+  Float x0 = std::floor(x), y0 = std::floor(y);
+  Float fx = x - x0, fy = y - y0;
+  int i = int(x0), j = int(y0);
+  return texel(i, j) * ((1 - fx) * (1 - fy)) + texel(i + 1, j) * (fx * (1 - fy)) +
+         texel(i, j + 1) * ((1 - fx) * fy) + texel(i + 1, j + 1) * (fx * fy);
 }
 
 Point2f InfiniteAreaLight::lookupCoordinates(const Vector3f& w, Float* sinTheta) const {
@@ -50,9 +72,7 @@ Spectrum InfiniteAreaLight::radiance(const Vector3f& w) const {
   if (!distribution_) return radiance_;
   Float sinTheta;
   Point2f st = lookupCoordinates(w, &sinTheta);
-  int i = clamp(int(st.x * map_.width), 0, map_.width - 1);
-  int j = clamp(int(st.y * map_.height), 0, map_.height - 1);
-  return radiance_ * map_.texels[size_t(j) * size_t(map_.width) + size_t(i)];
+  return radiance_ * interpolated(st);
 }
 
 Spectrum InfiniteAreaLight::sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi,
@@ -73,9 +93,7 @@ Spectrum InfiniteAreaLight::sampleLi(const Interaction& ref, const Point2f& u, V
     }
     *wi = normalize(lightToWorld_(sphericalDirection(sinTheta, std::cos(theta), phi)));
     *pdf = mapPdf / (2 * kPi * kPi * sinTheta);
-    int i = clamp(int(st.x * map_.width), 0, map_.width - 1);
-    int j = clamp(int(st.y * map_.height), 0, map_.height - 1);
-    L = radiance_ * map_.texels[size_t(j) * size_t(map_.width) + size_t(i)];
+    L = radiance_ * interpolated(st);
   }
   // A point beyond the scene's bounding sphere: the shadow ray crosses all geometry.
   Float reach = 2 * sceneRadius_ + distance(ref.p, sceneCenter_);
@@ -95,13 +113,19 @@ Float InfiniteAreaLight::pdfLi(const Interaction&, const Vector3f& wi) const {
 Spectrum InfiniteAreaLight::power() const {
   Spectrum integral = radiance_ * (4 * kPi);
   if (distribution_) {
-    // ∫ L dω over the texel cells: row j covers (cos θ0 - cos θ1) 2π / width per texel.
+    // ∫ L dω by the midpoint rule on cells a quarter of a texel wide and high: exact in φ, where
+    // the interpolation is linear, and to a small fraction of a per cent in θ; a cell of row j
+    // covers (cos θ0 - cos θ1) 2π / columns.
+    constexpr int kSub = 4;
+    const int rows = map_.height * kSub, columns = map_.width * kSub;
     Spectrum sum(0);
-    for (int j = 0; j < map_.height; ++j) {
-      Float cell = (std::cos(kPi * j / map_.height) - std::cos(kPi * (j + 1) / map_.height)) *
-                   (2 * kPi / map_.width);
-      for (int i = 0; i < map_.width; ++i)
-        sum += map_.texels[size_t(j) * size_t(map_.width) + size_t(i)] * cell;
+    for (int j = 0; j < rows; ++j) {
+      Float cell =
+          (std::cos(kPi * j / rows) - std::cos(kPi * (j + 1) / rows)) * (2 * kPi / columns);
+      Spectrum row(0);
+      for (int i = 0; i < columns; ++i)
+        row += interpolated(Point2f((i + Float(0.5)) / columns, (j + Float(0.5)) / rows));
+      sum += row * cell;
     }
     integral = radiance_ * sum;
   }

@@ -46,6 +46,10 @@ class InfiniteAreaLight : public Light {
   Spectrum radiance(const Vector3f& w) const;
 
  private:
+  // Texel (i, j), i taken modulo the width, j clamped to the rows.
+  const Spectrum& texel(int i, int j) const;
+  // The map at (s, t), bilinear between texel centres.
+  Spectrum interpolated(const Point2f& st) const;
   // (s, t) in [0, 1]^2 of a world direction, and sin θ there.
   Point2f lookupCoordinates(const Vector3f& w, Float* sinTheta) const;
 

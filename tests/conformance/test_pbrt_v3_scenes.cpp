@@ -1,0 +1,139 @@
+// pbrt-v3 conformance: each scene of ../shared/conformance/pbrt-v3 rendered by the candela command
+// twice (seeds 1 and 2) and compared with pbrt-v3's own render of it, region by region, with a
+// tolerance taken from the two renders' difference (support/reference_agreement.h). Family-wise
+// significance 0.001 per scene (Šidák over its 16 regions x 3 channels); the seeds are fixed, so a
+// pass is reproducible. The normal suite renders 32 samples per pixel, Long/ 256.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "film/output/image_output.h"
+#include "support/reference_agreement.h"
+#include "support/tail_probabilities.h"
+
+namespace candela::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kConformanceDir = fs::path(CANDELA_SHARED_DIR) / "conformance" / "pbrt-v3";
+
+struct ConformanceCase {
+  std::string scene;
+  int samplesPerPixel;
+};
+
+void PrintTo(const ConformanceCase& c, std::ostream* os) {
+  *os << c.scene << " at " << c.samplesPerPixel << " spp";
+}
+
+std::string caseName(const testing::TestParamInfo<ConformanceCase>& info) {
+  std::string name = info.param.scene;
+  for (char& ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return name;
+}
+
+// The reference's samples per pixel: the scene's Sampler line.
+int referenceSamples(const fs::path& scene) {
+  std::ifstream in(scene);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::smatch match;
+  const std::string s = text.str();
+  if (!std::regex_search(s, match, std::regex(R"("integer pixelsamples"\s*\[\s*(\d+)\s*\])")))
+    throw std::runtime_error(scene.string() + " has no pixelsamples");
+  return std::stoi(match[1]);
+}
+
+ImageBuffer render(const fs::path& scene, int spp, int seed, const fs::path& out) {
+  std::ostringstream cmd;
+  cmd << '"' << CANDELA_BINARY << "\" -q --preview none --spp " << spp << " --seed " << seed
+      << " -o \"" << out.string() << "\" \"" << scene.string() << "\" 2>\"" << out.string()
+      << ".log\"";
+  const int status = std::system(cmd.str().c_str());
+  if (status != 0) {
+    std::ifstream log(out.string() + ".log");
+    std::stringstream text;
+    text << log.rdbuf();
+    throw std::runtime_error("candela failed on " + scene.string() + ":\n" + text.str());
+  }
+  return readImage(out.string());
+}
+
+// Scenes that still render differently, and why: their differences are reported, not failed.
+// Each is a defect to fix or a deliberate difference that README.md lists.
+const std::map<std::string, std::string> kKnownDifferences = {
+    {"quadrics-uv",
+     "the cone's apex: a few pixels where u of the surface around the tip differs (2 blocks, 5%)"},
+    {"quadrics-checker",
+     "the cone's apex, as in quadrics-uv (resolved from about 64 samples per pixel)"},
+};
+
+class PbrtV3Conformance : public testing::TestWithParam<ConformanceCase> {};
+
+TEST_P(PbrtV3Conformance, AgreesWithPbrtV3sRender) {
+  const ConformanceCase& c = GetParam();
+  const fs::path scene = kConformanceDir / "scenes" / (c.scene + ".pbrt");
+  const fs::path reference = kConformanceDir / "refs" / (c.scene + ".exr");
+  if (!fs::exists(scene) || !fs::exists(reference))
+    GTEST_SKIP() << "no " << scene << " or " << reference << " (../shared is not here)";
+  const fs::path dir = fs::path(testing::TempDir()) / ("conformance-" + c.scene);
+  fs::create_directories(dir);
+
+  ImageBuffer a = render(scene, c.samplesPerPixel, 1, dir / "a.exr");
+  ImageBuffer b = render(scene, c.samplesPerPixel, 2, dir / "b.exr");
+  ImageBuffer ref = readImage(reference.string());
+
+  ReferenceAgreementOptions options;
+  options.samplesPerPixel = c.samplesPerPixel;
+  options.referenceSamplesPerPixel = referenceSamples(scene);
+  ReferenceAgreement agreement = compareWithReference(a, b, ref, options);
+  const double level = stats::sidak(0.001, int(agreement.regions.size()));
+  const auto known = kKnownDifferences.find(c.scene);
+  int failed = 0;
+  for (const ReferenceRegion& region : agreement.regions)
+    if (region.pValue < level) {
+      ++failed;
+      if (known == kKnownDifferences.end()) {
+        ADD_FAILURE() << c.scene << ": " << agreement.describe(region);
+      }
+    }
+  if (known != kKnownDifferences.end())
+    std::cout << c.scene << ": a known difference, not counted: " << known->second
+              << (failed ? "\n" : " (agrees at this sample count)\n");
+  const ReferenceRegion& worst = agreement.worst();
+  std::cout << c.scene << " at " << c.samplesPerPixel << " spp: mean ratio " << agreement.meanRatio
+            << ", relMSE " << agreement.relMse << ", worst region p " << worst.pValue << " (F "
+            << worst.ratio << ", dof " << worst.degreesOfFreedom << "), " << failed << " of "
+            << agreement.regions.size() << " regions differ\n";
+  fs::remove_all(dir);
+}
+
+const char* const kScenes[] = {
+    "camera-dof",          "camera-environment", "camera-orthographic",
+    "camera-screenwindow", "combining",          "hyperboloid-checker",
+    "hyperboloid-uv",      "imagemap",           "light-area-disk-twosided",
+    "light-area-sphere",   "light-distant",      "light-goniometric",
+    "light-infinite-map",  "light-point",        "light-projection",
+    "light-spot",          "mappings",           "materials-a",
+    "materials-b",         "procedural",         "quadrics-checker",
+    "quadrics-uv"};
+
+std::vector<ConformanceCase> cases(int spp) {
+  std::vector<ConformanceCase> out;
+  for (const char* s : kScenes) out.push_back({s, spp});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PbrtV3Conformance, testing::ValuesIn(cases(32)), caseName);
+INSTANTIATE_TEST_SUITE_P(Long, PbrtV3Conformance, testing::ValuesIn(cases(256)), caseName);
+
+}  // namespace
+}  // namespace candela::test

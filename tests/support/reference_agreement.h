@@ -1,0 +1,61 @@
+// Does a render agree with a reference image made by another renderer with many more samples?
+// The tolerance comes from the render's own noise, measured by rendering twice with different
+// seeds (a, b): per block of block x block pixels and per channel, d = (a - b)^2 / 4 estimates the
+// variance of m = (a + b) / 2 without bias. The reference's own noise adds a share n / N of the
+// per-render variance (n, N samples per pixel); differences within the rounding of the reference's
+// storage (half floats) are not counted. Over each region of a regions x regions grid, per channel,
+//   F = sum (|m - r| - rounding)+^2 / (sum d (1 + 2n/N) + blocks (resolution mean r)^2)
+// is a ratio of two sums with the same expectation when the renders agree: an F ratio whose
+// degrees of freedom are Satterthwaite's estimate from the blocks' variances (fewer than the
+// block count where a few noisy blocks dominate). Its upper tail comes from Paulson's normal
+// approximation of the F distribution (Johnson, Kotz & Balakrishnan, Continuous Univariate
+// Distributions vol. 2, ch. 27).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "film/image_buffer.h"
+
+namespace candela::test {
+
+struct ReferenceRegion {
+  int regionX = 0, regionY = 0, channel = 0;
+  double ratio = 0;             // F
+  double degreesOfFreedom = 0;  // Satterthwaite's, for numerator and denominator alike
+  double pValue = 1;            // P(F >= ratio) if render and reference agree
+  double renderMean = 0, referenceMean = 0;
+};
+
+struct ReferenceAgreement {
+  std::vector<ReferenceRegion> regions;
+  double meanRatio = 0;  // mean of (a + b) / 2 over mean of the reference, all channels
+  // mean over blocks and channels of (m - r)^2 / (r^2 + 1e-2) after the block downsample
+  double relMse = 0;
+  // The smallest p-value and where it is.
+  const ReferenceRegion& worst() const;
+  std::string describe(const ReferenceRegion& region) const;
+};
+
+struct ReferenceAgreementOptions {
+  int samplesPerPixel = 0;           // of each of a and b
+  int referenceSamplesPerPixel = 0;  // of the reference
+  int block = 4;
+  int regions = 4;
+  // Block differences well below this fraction of the region's mean are not resolved: rare light
+  // that both renders missed leaves no noise to measure (see compareWithReference).
+  double resolution = 1e-3;
+  bool referenceIsHalf = true;  // stored as half floats: ignore differences within their rounding
+};
+
+// a, b and reference: the same size, at least 3 channels (the first three, R G B, are compared);
+// the block size must divide the image size and the region count the block grid.
+ReferenceAgreement compareWithReference(const ImageBuffer& a, const ImageBuffer& b,
+                                        const ImageBuffer& reference,
+                                        const ReferenceAgreementOptions& options);
+
+// Upper tail of the F distribution with (d1, d2) degrees of freedom at x (Paulson's
+// approximation; accurate to a few per cent of the tail probability for d1, d2 >= 10).
+double fSurvival(double x, double d1, double d2);
+
+}  // namespace candela::test

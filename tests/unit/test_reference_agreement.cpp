@@ -1,0 +1,151 @@
+// The conformance comparison's statistic (support/reference_agreement.h) on synthetic images whose
+// noise is known: calibrated when render and reference agree, sensitive when they do not.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "support/reference_agreement.h"
+#include "support/tail_probabilities.h"
+
+namespace candela::test {
+namespace {
+
+// F critical values from standard tables (4 digits).
+TEST(ReferenceAgreement, FSurvivalMatchesTables) {
+  EXPECT_NEAR(fSurvival(2.9782, 10, 10), 0.05, 0.003);
+  EXPECT_NEAR(fSurvival(2.1242, 20, 20), 0.05, 0.002);
+  EXPECT_NEAR(fSurvival(2.9377, 20, 20), 0.01, 0.0005);
+  EXPECT_EQ(fSurvival(0, 10, 10), 1);
+  EXPECT_EQ(fSurvival(INFINITY, 10, 10), 0);
+  EXPECT_NEAR(fSurvival(1, 200, 200), 0.5, 1e-3);
+}
+
+struct Synthetic {
+  ImageBuffer a, b, reference;
+};
+
+// A smooth image plus per-pixel Gaussian noise whose deviation is sigma(x, y) at n samples per
+// pixel (the reference: at 1024), and `bias` added to the renders in the top-left region.
+template <typename Sigma>
+Synthetic makeImages(uint32_t seed, Sigma sigma, double bias = 0) {
+  const int size = 64, n = 16, referenceN = 1024;
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal;
+  Synthetic s{ImageBuffer(size, size, {"R", "G", "B"}), ImageBuffer(size, size, {"R", "G", "B"}),
+              ImageBuffer(size, size, {"R", "G", "B"})};
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double truth = 1 + 0.5 * std::sin(0.1 * x + c) * std::cos(0.07 * y);
+        const double sd = sigma(x, y);
+        const double shift = (x < 16 && y < 16) ? bias : 0;
+        s.a.at(x, y, c) = float(truth + shift + sd * normal(rng));
+        s.b.at(x, y, c) = float(truth + shift + sd * normal(rng));
+        s.reference.at(x, y, c) =
+            float(truth + sd * std::sqrt(double(n) / referenceN) * normal(rng));
+      }
+  return s;
+}
+
+ReferenceAgreementOptions options() {
+  ReferenceAgreementOptions o;
+  o.samplesPerPixel = 16;
+  o.referenceSamplesPerPixel = 1024;
+  o.referenceIsHalf = false;
+  o.resolution = 0;
+  return o;
+}
+
+// Over 40 agreeing image triples (1920 regions), the fraction of p-values below 0.05 is within
+// the binomial 99.9% interval around 0.05 (about 0.034-0.069), widened for the approximations to
+// 0.025-0.08; likewise below 0.5.
+template <typename Sigma>
+void expectCalibrated(Sigma sigma) {
+  int below5 = 0, below50 = 0, total = 0;
+  for (uint32_t seed = 1; seed <= 40; ++seed) {
+    Synthetic s = makeImages(seed, sigma);
+    for (const ReferenceRegion& r :
+         compareWithReference(s.a, s.b, s.reference, options()).regions) {
+      below5 += r.pValue < 0.05;
+      below50 += r.pValue < 0.5;
+      ++total;
+    }
+  }
+  EXPECT_GT(double(below5) / total, 0.025);
+  EXPECT_LT(double(below5) / total, 0.08);
+  EXPECT_GT(double(below50) / total, 0.44);
+  EXPECT_LT(double(below50) / total, 0.56);
+}
+
+TEST(ReferenceAgreement, CalibratedForEvenNoise) {
+  expectCalibrated([](int, int) { return 0.2; });
+}
+
+TEST(ReferenceAgreement, CalibratedWhenAFewBlocksCarryMostNoise) {
+  // Every eighth column of blocks 30 times noisier: Satterthwaite's degrees of freedom drop.
+  expectCalibrated([](int x, int) { return (x / 4) % 8 == 0 ? 3.0 : 0.1; });
+}
+
+TEST(ReferenceAgreement, FindsABiasOfThreeTimesTheBlockNoiseInOneRegion) {
+  // Block means of one render have deviation 0.2 / 4 = 0.05; a bias of 0.15 (15% of the image)
+  // in the top-left region (16 blocks) is found there, at the conformance test's level, and
+  // nowhere else.
+  Synthetic s = makeImages(
+      7, [](int, int) { return 0.2; }, 0.15);
+  ReferenceAgreement agreement = compareWithReference(s.a, s.b, s.reference, options());
+  const double level = stats::sidak(0.001, int(agreement.regions.size()));
+  for (const ReferenceRegion& r : agreement.regions) {
+    if (r.regionX == 0 && r.regionY == 0)
+      EXPECT_LT(r.pValue, level) << agreement.describe(r);
+    else
+      EXPECT_GT(r.pValue, level) << agreement.describe(r);
+  }
+}
+
+TEST(ReferenceAgreement, NoiselessDifferencesFailAndNoiselessAgreementPasses) {
+  Synthetic s = makeImages(3, [](int, int) { return 0.0; });
+  for (const ReferenceRegion& r : compareWithReference(s.a, s.b, s.reference, options()).regions)
+    EXPECT_EQ(r.pValue, 1);
+  s.reference.at(5, 5, 1) += 0.01f;
+  ReferenceAgreement agreement = compareWithReference(s.a, s.b, s.reference, options());
+  EXPECT_EQ(agreement.worst().pValue, 0);
+  EXPECT_EQ(agreement.worst().channel, 1);
+}
+
+TEST(ReferenceAgreement, DifferencesBelowTheResolutionAreNotCounted) {
+  // A noiseless render; the reference 0.05% brighter in one block: a difference at resolution 0,
+  // none at the default 1e-3 of the region's mean; 3% in one block of the region's 16 is found
+  // (F = 0.03^2 / (16 x 0.001^2) = 56).
+  Synthetic s = makeImages(11, [](int, int) { return 0.0; });
+  ReferenceAgreementOptions o = options();
+  auto brighten = [&](float factor) {
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 4; ++x) s.reference.at(x, y, 0) *= factor;
+  };
+  brighten(1.0005f);
+  EXPECT_EQ(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, 0);
+  o.resolution = 1e-3;
+  EXPECT_GT(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, 0.01);
+  brighten(1.03f / 1.0005f);
+  EXPECT_LT(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, 1e-6);
+}
+
+TEST(ReferenceAgreement, HalfFloatRoundingOfTheReferenceIsNoise) {
+  // A noiseless render against its own reference rounded to 11 significant bits: no difference
+  // when the reference is declared half, a difference otherwise.
+  Synthetic s = makeImages(5, [](int, int) { return 0.0; });
+  for (float& v : s.reference.data) {
+    int e;
+    std::frexp(v, &e);
+    const float step = std::ldexp(1.f, e - 11);
+    v = std::round(v / step) * step;
+  }
+  ReferenceAgreementOptions o = options();
+  EXPECT_EQ(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, 0);
+  o.referenceIsHalf = true;
+  EXPECT_GT(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, stats::sidak(0.001, 48));
+}
+
+}  // namespace
+}  // namespace candela::test
