@@ -1,6 +1,8 @@
 #include "reflection/irregular_brdf.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -58,58 +60,51 @@ Vector3f direction(double theta, double phi) {
 
 }  // namespace
 
-PointKdTree<5>::Point IrregularBrdfTable::embed(const Vector3f& a, const Vector3f& b) {
-  Float sa = std::sqrt(a.x * a.x + a.y * a.y);
-  Float bx, by;
-  if (sa > 0) {
-    Float c = a.x / sa, s = a.y / sa;
-    bx = b.x * c + b.y * s;
-    by = std::abs(-b.x * s + b.y * c);
-  } else {  // a at the pole: any azimuth frame is the same one; put b at azimuth 0
-    bx = std::sqrt(b.x * b.x + b.y * b.y);
-    by = 0;
-  }
-  return {sa, a.z, bx, by, b.z};
+PointKdTree<3>::Point IrregularBrdfTable::reduce(const Vector3f& a, const Vector3f& b) {
+  // |phi_a - phi_b| rather than the difference wrapped into [0, 2 pi): the same after folding,
+  // and bit-identical for (a, b) and (b, a). A pole has azimuth 0, as in the book, whatever the
+  // signs of its zero x and y (atan2(-0, -0) is -pi).
+  auto phi = [](const Vector3f& w) {
+    return w.x == 0 && w.y == 0 ? Float(0) : std::atan2(w.y, w.x);
+  };
+  Float dphi = std::abs(phi(a) - phi(b));
+  if (dphi > kPi) dphi = 2 * kPi - dphi;
+  return {sinTheta(a) * sinTheta(b), dphi / kPi, cosTheta(a) * cosTheta(b)};
 }
 
 IrregularBrdfTable::IrregularBrdfTable(std::vector<IrregularBrdfSample> samples)
     : samples_(std::move(samples)) {
-  std::vector<PointKdTree<5>::Point> points;
-  points.reserve(2 * samples_.size());
-  for (const IrregularBrdfSample& s : samples_) {
-    points.push_back(embed(s.wi, s.wo));
-    points.push_back(embed(s.wo, s.wi));
-  }
-  tree_ = PointKdTree<5>(std::move(points));
+  std::vector<PointKdTree<3>::Point> points;
+  points.reserve(samples_.size());
+  for (const IrregularBrdfSample& s : samples_) points.push_back(reduce(s.wi, s.wo));
+  tree_ = PointKdTree<3>(std::move(points));
 }
 
-Spectrum IrregularBrdfTable::lookupOrdered(const Vector3f& a, const Vector3f& b) const {
-  uint32_t index[kNeighbours];
-  Float dist2[kNeighbours];
-  int n = tree_.nearest(embed(a, b), kNeighbours, index, dist2);
-  if (n == 0) return Spectrum(0);
-  // A compact smooth kernel reaching zero just past the farthest neighbour, so that the result
-  // varies continuously as neighbours enter and leave the set.
-  Float h2 = dist2[n - 1] * Float(1.0001) + Float(1e-12);
-  Spectrum sum(0);
-  Float weightSum = 0;
-  for (int i = 0; i < n; ++i) {
-    Float t = 1 - dist2[i] / h2;
-    Float w = t * t;
-    sum += samples_[index[i] / 2].value * w;
+IrregularBrdfEstimate IrregularBrdfTable::estimate(const Vector3f& wo, const Vector3f& wi) const {
+  IrregularBrdfEstimate e;
+  if (!sameHemisphere(wo, wi)) return e;
+  PointKdTree<3>::Point q = reduce(wi, wo);
+  // The book searches radius after radius; the radius it stops at is the first of the doubling
+  // sequence that holds the kEnoughSamples-th nearest sample strictly inside, so one
+  // nearest-neighbour query finds it and one fixed-radius query gathers the samples.
+  uint32_t index[kEnoughSamples];
+  Float dist2[kEnoughSamples];
+  int n = tree_.nearest(q, kEnoughSamples, index, dist2);
+  bool enough = n == kEnoughSamples;
+  Float r2 = kStartRadius2;
+  while (!(enough && dist2[kEnoughSamples - 1] < r2) && !(r2 > kLastRadius2)) r2 *= 2;
+  e.radius2 = r2;
+  // Double weights: exp(-100 d^2) leaves float's range for d^2 > 1.04, inside the last radius.
+  double sum[3] = {0, 0, 0}, weightSum = 0;
+  tree_.forEachWithin(q, r2, [&](uint32_t i, Float d2) {
+    double w = std::exp(-kFalloff * double(d2));
+    for (int c = 0; c < 3; ++c) sum[c] += w * double(samples_[i].value[c]);
     weightSum += w;
-  }
-  return weightSum > 0 ? sum / weightSum : Spectrum(0);
-}
-
-Spectrum IrregularBrdfTable::lookup(const Vector3f& wo, const Vector3f& wi) const {
-  if (!sameHemisphere(wo, wi)) return Spectrum(0);
-  Vector3f o = wo, i = wi;
-  if (o.z < 0) {
-    o.z = -o.z;
-    i.z = -i.z;
-  }
-  return (lookupOrdered(i, o) + lookupOrdered(o, i)) * Float(0.5);
+    ++e.found;
+  });
+  if (e.found == 0) return e;  // the book divides 0 by 0 here
+  for (int c = 0; c < 3; ++c) e.value[c] = Float(std::max(0.0, sum[c]) / weightSum);
+  return e;
 }
 
 IrregularBrdfTable readIrregularBrdf(const std::string& path, const SpectrumToRGB& toRGB) {
@@ -145,8 +140,7 @@ IrregularBrdfTable readIrregularBrdf(const std::string& path, const SpectrumToRG
       throw FileError(path, "line " + std::to_string(numbers[r].line) +
                                 ": polar angles must lie in [0, pi/2] radians");
     for (size_t i = 0; i < nLambda; ++i) values[i] = Float(numbers[r + 4 + i].value);
-    Spectrum rgb = clampSpectrum(toRGB(lambda, values), 0, kInfinity);
-    samples.push_back({direction(thetaI, phiI), direction(thetaO, phiO), rgb});
+    samples.push_back({direction(thetaI, phiI), direction(thetaO, phiO), toRGB(lambda, values)});
   }
   return IrregularBrdfTable(std::move(samples));
 }

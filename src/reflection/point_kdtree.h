@@ -1,5 +1,5 @@
-// A static kd-tree over points in R^D answering k-nearest-neighbour queries, for looking up
-// irregularly sampled measured BRDFs (pbrt-v2's "measured" material keeps its samples in one) and
+// A static kd-tree over points in R^D answering k-nearest-neighbour and fixed-radius queries, for
+// looking up irregularly sampled measured BRDFs (pbrt 2e §8.6: every sample within a radius) and
 // photons (pbrt 2e §15.6: the k nearest within a maximum distance, optionally only those a
 // predicate accepts).
 // The tree is implicit: each range of the index permutation stores its median at the middle, down
@@ -56,6 +56,14 @@ class PointKdTree {
     off.fill(0);
     if (k > 0) search(0, int(order_.size()), query, 0, off);
     return query.found;
+  }
+
+  // Calls visit(index, dist2) for every point strictly closer than sqrt(maxDist2), index in
+  // construction order. The order of the calls depends only on the tree and q, so sums over them
+  // are reproducible.
+  template <typename Visit>
+  void forEachWithin(const Point& q, Float maxDist2, const Visit& visit) const {
+    visitWithin(0, int(order_.size()), q, maxDist2, visit);
   }
 
  private:
@@ -140,6 +148,21 @@ class PointKdTree {
       search(farLo, farHi, qr, farRd, off);
       off[axis] = old;
     }
+  }
+
+  template <typename Visit>
+  void visitWithin(int lo, int hi, const Point& q, Float maxDist2, const Visit& visit) const {
+    if (hi - lo <= kLeafSize) {
+      for (int i = lo; i < hi; ++i)
+        if (Float d2 = distance2(q, points_[i]); d2 < maxDist2) visit(order_[i], d2);
+      return;
+    }
+    int mid = (lo + hi) / 2;
+    if (Float d2 = distance2(q, points_[mid]); d2 < maxDist2) visit(order_[mid], d2);
+    Float diff = q[axis_[mid]] - points_[mid][axis_[mid]];
+    // The lower half lies at or below the splitting plane, the upper half at or above it.
+    if (diff <= 0 || diff * diff < maxDist2) visitWithin(lo, mid, q, maxDist2, visit);
+    if (diff >= 0 || diff * diff < maxDist2) visitWithin(mid + 1, hi, q, maxDist2, visit);
   }
 
   std::vector<Point> points_;

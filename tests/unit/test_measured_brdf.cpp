@@ -154,8 +154,7 @@ TEST(MeasuredBRDF, IrregularTextFormatParses) {
   EXPECT_NEAR(t.samples()[1].value[2], 0.4f, 2e-3f);
   EXPECT_NEAR(t.samples()[0].wo.x, -std::sin(0.5f), 1e-6f);
   EXPECT_NEAR(t.samples()[2].wi.z, std::cos(1.0f), 1e-6f);
-  // Looking up a sample's own directions returns its value when it is the nearest by far;
-  // with three samples every lookup blends them, so only bounds hold.
+  // With three samples every lookup blends those within its radius, so only bounds hold.
   Spectrum f = IrregularMeasuredBRDF(&t).f(t.samples()[0].wo, t.samples()[0].wi);
   EXPECT_GE(f[1], 0.1f - 1e-3f);
   EXPECT_LE(f[1], 0.4f + 1e-3f);
@@ -214,10 +213,7 @@ TEST(MeasuredBRDF, RealPbrtV2FileHasPlausibleValues) {
     EXPECT_LE(rho.maxComponent(), 1) << theta;
     EXPECT_GT(rho.maxComponent(), 0.01f) << theta;
   }
-  // Reciprocity: the lookup is symmetrised, so exact; the data themselves, interpolated in one
-  // order and the other, agree to within their noise: the median relative difference over
-  // random pairs is below 10%.
-  std::vector<double> diffs;
+  // Reciprocity: both orders of a pair reduce to the same point (pbrt 2e §8.6), so exact.
   for (int i = 0; i < 500; ++i) {
     auto d = [&] {
       Float z = 0.2f + 0.8f * rng.uniformFloat(), phi = 2 * kPi * rng.uniformFloat();
@@ -226,11 +222,7 @@ TEST(MeasuredBRDF, RealPbrtV2FileHasPlausibleValues) {
     };
     Vector3f wo = d(), wi = d();
     EXPECT_EQ(b.f(wo, wi), b.f(wi, wo));
-    Spectrum a = t.lookupOrdered(wo, wi), c = t.lookupOrdered(wi, wo);
-    diffs.push_back(std::abs(a[0] - c[0]) / std::max(1e-6f, 0.5f * (a[0] + c[0])));
   }
-  std::nth_element(diffs.begin(), diffs.begin() + 250, diffs.end());
-  EXPECT_LT(diffs[250], 0.1);
 }
 
 }  // namespace

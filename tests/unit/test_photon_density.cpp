@@ -38,7 +38,7 @@ std::vector<Photon> latticePhotons(Float h, Float extent, const Spectrum& alpha,
   return photons;
 }
 
-TEST(PointKdTree, NearestWithinAndMatchingAgreeWithBruteForce) {
+TEST(PointKdTree, QueriesAgreeWithBruteForce) {
   RNG rng(3);
   std::vector<PointKdTree<3>::Point> points(2000);
   for (auto& p : points) p = {rng.uniformFloat(), rng.uniformFloat(), rng.uniformFloat()};
@@ -67,6 +67,11 @@ TEST(PointKdTree, NearestWithinAndMatchingAgreeWithBruteForce) {
     found = tree.nearestMatching(q, k, maxDist2, even, idx, d2);
     ASSERT_EQ(found, std::min<int>(k, int(evens.size())));
     for (int i = 0; i < found; ++i) EXPECT_EQ(idx[i], evens[i].second);
+    // The fixed-radius query visits every point inside, each once, with the same distance.
+    std::vector<std::pair<Float, uint32_t>> visited;
+    tree.forEachWithin(q, maxDist2, [&](uint32_t i, Float d) { visited.push_back({d, i}); });
+    std::sort(visited.begin(), visited.end());
+    EXPECT_EQ(visited, all);
   }
 }
 
