@@ -76,7 +76,11 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
   build.colorMatrix = writer.workingSpaceMatrix();
   build.loadImage = [&writer](const std::string& path, const std::string& colorSpace) {
-    return loadTextureImage(path, colorSpace, writer.colorManagement(), writer.workingSpace());
+    const ColorManagement& cm = writer.colorManagement();
+    std::string from = colorSpace;
+    if (from == TextureFactory::kSrgbEncoded) from = defaultTextureColorSpace(true, cm);
+    if (from == TextureFactory::kStoredLinear) from = defaultTextureColorSpace(false, cm);
+    return loadTextureImage(path, from, cm, writer.workingSpace());
   };
   if (!cli.quiet) build.warn = printWarning;
   build.nThreads = cli.nThreads;

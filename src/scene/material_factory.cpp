@@ -77,16 +77,18 @@ const Material* MaterialFactory::named(const MaterialDesc& d, const std::string&
   std::string name = d.params.getOneString(param, "");
   FileLoc loc = d.params.locationOf(param, d.loc);
   if (name.empty()) throw SceneError(loc, "mix needs \"string " + param + "\"");
-  auto it = desc_.namedMaterials.find(name);
-  if (it == desc_.namedMaterials.end())
-    throw SceneError(loc, "mix: unknown named material '" + name + "'");
+  // Named materials are graphics state: the mix sees those in effect at its statement.
+  const std::map<std::string, int>& known =
+      d.namedMaterials ? *d.namedMaterials : desc_.namedMaterials;
+  auto it = known.find(name);
+  if (it == known.end()) throw SceneError(loc, "mix: unknown named material '" + name + "'");
   const Material* m = get(it->second);
   if (!m) throw SceneError(loc, "mix: named material '" + name + "' is \"none\"");
   return m;
 }
 
 const Texture<Float>* MaterialFactory::bumpMap(const MaterialDesc& d) {
-  if (d.params.find("bumpmap")) return textures_.scalar(d.params, "bumpmap", 0, d.loc);
+  if (d.params.find("bumpmap")) return textures_.scalar(d, "bumpmap", 0);
   if (!d.bumpMap) return nullptr;
   const PluginDesc& b = *d.bumpMap;
   Float s = b.params.getOneFloat("scale", 1);
@@ -145,9 +147,9 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
   const ParamSet& p = d.params;
   const FileLoc& loc = d.loc;
   auto spec = [&](const char* name, Float def) {
-    return textures_.spectrum(p, name, Spectrum(def), loc);
+    return textures_.spectrum(d, name, Spectrum(def));
   };
-  auto flt = [&](const char* name, Float def) { return textures_.scalar(p, name, def, loc); };
+  auto flt = [&](const char* name, Float def) { return textures_.scalar(d, name, def); };
   if (d.name == "mix") {
     const Material* m1 = named(d, "namedmaterial1");
     const Material* m2 = named(d, "namedmaterial2");
@@ -167,8 +169,8 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
     return std::make_unique<GlassMaterial>(spec("Kr", 1), spec("Kt", 1), flt("index", 1.5f), bump);
   if (d.name == "mirror") return std::make_unique<MirrorMaterial>(spec("Kr", 0.9f), bump);
   if (d.name == "metal")
-    return std::make_unique<MetalMaterial>(textures_.spectrum(p, "eta", copper::kEta, loc),
-                                           textures_.spectrum(p, "k", copper::kK, loc),
+    return std::make_unique<MetalMaterial>(textures_.spectrum(d, "eta", copper::kEta),
+                                           textures_.spectrum(d, "k", copper::kK),
                                            flt("roughness", 0.01f), bump);
   if (d.name == "shinymetal")
     return std::make_unique<ShinyMetalMaterial>(spec("Ks", 1), spec("Kr", 1),

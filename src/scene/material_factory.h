@@ -10,8 +10,9 @@
 // Every material takes a float texture "bumpmap"; lrt's BumpMap statement ("windy": scale 1,
 // stretch 1; "bumpy": octaves 6, omega .5, scale 1) bumps the material in effect.
 //
-// mix resolves its names through MakeNamedMaterial (the last definition of each name); a mix that
-// reaches itself is an error. measured files are read once per path (relative to the scene file
+// mix resolves its names through the MakeNamedMaterial definitions in effect at its statement
+// (MaterialDesc::namedMaterials; pbrt-v3 scopes them by AttributeBegin/End); a mix that reaches
+// itself is an error. measured files are read once per path (relative to the scene file
 // naming them).
 #pragma once
 

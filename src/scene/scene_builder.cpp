@@ -23,6 +23,8 @@ Matrix4x4 fromFileOrder(const Float m[16]) {
                    m[7], m[11], m[15]);
 }
 
+std::string firstDefined(const FileLoc& loc) { return " (first defined at " + loc.str() + ")"; }
+
 const char* pushName(int kind) {
   static const char* names[] = {"AttributeBegin", "TransformBegin", "ObjectBegin"};
   return names[kind];
@@ -55,7 +57,8 @@ void SceneBuilder::push(PushKind kind, const FileLoc& loc) {
   if (stack_.size() >= kMaxNesting)
     throw SceneError(loc, std::string(pushName(int(kind))) + " nested more than " +
                               std::to_string(kMaxNesting) + " levels deep");
-  stack_.push_back({kind, loc, ctm_, activeBits_, state_});
+  stack_.push_back(
+      {kind, loc, ctm_, activeBits_, state_, textureNames_.mark(), namedMaterialNames_.mark()});
 }
 
 void SceneBuilder::pop(PushKind kind, const char* statement, const FileLoc& loc) {
@@ -68,7 +71,11 @@ void SceneBuilder::pop(PushKind kind, const char* statement, const FileLoc& loc)
                               pushName(int(top.kind)) + " at " + top.loc.str());
   ctm_ = top.ctm;
   activeBits_ = top.activeBits;
-  if (kind != PushKind::Transform) state_ = top.state;
+  if (kind != PushKind::Transform) {
+    state_ = top.state;
+    textureNames_.restore(top.textureMark);
+    namedMaterialNames_.restore(top.materialMark);
+  }
   stack_.pop_back();
 }
 
@@ -298,6 +305,8 @@ void SceneBuilder::worldEnd(const FileLoc& loc) {
     stack_.pop_back();
   }
   desc_.worldEndLoc = loc;
+  for (const auto& [name, def] : namedMaterialNames_.current())
+    desc_.namedMaterials[name] = def.index;
   SceneDescription done = std::move(desc_);
   resetForNextFrame();
   // The rendering options stay for the next frame (lrt keeps its GraphicsOptions).
@@ -328,6 +337,7 @@ void SceneBuilder::resetForNextFrame() {
   stack_.clear();
   namedCoordinateSystems_.clear();
   textureNames_.clear();
+  namedMaterialNames_.clear();
   instanceNames_.clear();
   currentInstance_ = -1;
 }
@@ -350,6 +360,38 @@ void SceneBuilder::endOfInput(const FileLoc& loc) {
 
 // ---- Materials and textures ------------------------------------------------------------------
 
+int SceneBuilder::attributeDepth() const {
+  int depth = 0;
+  for (const Pushed& p : stack_) depth += p.kind != PushKind::Transform;
+  return depth;
+}
+
+TextureBindings SceneBuilder::bindTextures(const ParamSet& params) const {
+  // Both types are looked up: which one a parameter needs is known only to its factory, which
+  // also reports names bound to neither.
+  TextureBindings b;
+  for (const ParamItem& item : params.items()) {
+    if (item.type != ParamType::Texture) continue;
+    for (const std::string& texName : item.strings) {
+      if (const ScopedNames::Definition* f = textureNames_.find("float:" + texName))
+        b.floats[texName] = f->index;
+      if (const ScopedNames::Definition* s = textureNames_.find("spectrum:" + texName))
+        b.spectra[texName] = s->index;
+    }
+  }
+  return b;
+}
+
+std::map<std::string, int> SceneBuilder::bindNamedMaterials(const ParamSet& params) const {
+  std::map<std::string, int> b;
+  for (const ParamItem& item : params.items()) {
+    if (item.type != ParamType::String || item.name.rfind("namedmaterial", 0) != 0) continue;
+    for (const std::string& n : item.strings)
+      if (const ScopedNames::Definition* d = namedMaterialNames_.find(n)) b[n] = d->index;
+  }
+  return b;
+}
+
 void SceneBuilder::texture(const std::string& name, const std::string& type,
                            const std::string& className, ParamSet params, const FileLoc& loc) {
   requireWorld("Texture", loc);
@@ -358,16 +400,19 @@ void SceneBuilder::texture(const std::string& name, const std::string& type,
   if (kind != "float" && kind != "spectrum")
     throw SceneError(
         loc, "texture type must be \"float\", \"spectrum\" or \"color\", found \"" + type + "\"");
-  std::string key = kind + ":" + name;
-  if (auto it = textureNames_.find(key); it != textureNames_.end() && warn_)
-    warn_(loc, kind + " texture '" + name + "' redefined (first defined at " +
-                   desc_.textures[it->second].loc.str() + ")");
   TextureDesc t;
   static_cast<PluginDesc&>(t) = plugin(className, std::move(params), loc);
+  t.textures = bindTextures(t.params);  // before the name is defined: a texture cannot name itself
   t.textureName = name;
   t.type = kind;
-  t.worldToTexture = inverse(ctm_[0]);
-  textureNames_[key] = int(desc_.textures.size());
+  t.textureToWorld = ctm_[0];
+  // Redefining a name inside an attribute block only shadows the outer definition until the
+  // block ends, as in pbrt-v3; in the same block the earlier definition becomes unreachable.
+  if (auto previous =
+          textureNames_.define(kind + ":" + name, int(desc_.textures.size()), attributeDepth());
+      previous && warn_)
+    warn_(loc, kind + " texture '" + name + "' redefined in the same attribute block" +
+                   firstDefined(desc_.textures[previous->index].loc));
   desc_.textures.push_back(std::move(t));
 }
 
@@ -375,6 +420,8 @@ void SceneBuilder::material(const std::string& name, ParamSet params, const File
   requireWorld("Material", loc);
   MaterialDesc m;
   static_cast<PluginDesc&>(m) = plugin(name, std::move(params), loc);
+  m.textures = bindTextures(m.params);
+  m.namedMaterials = bindNamedMaterials(m.params);
   m.bumpMap = state_.bumpMap;
   state_.material = int(desc_.materials.size());
   desc_.materials.push_back(std::move(m));
@@ -386,22 +433,25 @@ void SceneBuilder::makeNamedMaterial(const std::string& name, ParamSet params, c
   std::string type = params.getOneString("type", "");
   if (type.empty())
     throw SceneError(loc, "MakeNamedMaterial '" + name + "' needs a \"string type\" parameter");
-  if (auto it = desc_.namedMaterials.find(name); it != desc_.namedMaterials.end() && warn_)
-    warn_(loc, "named material '" + name + "' redefined (first defined at " +
-                   desc_.materials[it->second].loc.str() + ")");
   MaterialDesc m;
   static_cast<PluginDesc&>(m) = plugin(type, std::move(params), loc);
+  m.textures = bindTextures(m.params);
+  m.namedMaterials = bindNamedMaterials(m.params);
   m.bumpMap = state_.bumpMap;
-  desc_.namedMaterials[name] = int(desc_.materials.size());
+  if (auto previous =
+          namedMaterialNames_.define(name, int(desc_.materials.size()), attributeDepth());
+      previous && warn_)
+    warn_(loc, "named material '" + name + "' redefined in the same attribute block" +
+                   firstDefined(desc_.materials[previous->index].loc));
   desc_.materials.push_back(std::move(m));
 }
 
 void SceneBuilder::namedMaterial(const std::string& name, const FileLoc& loc) {
   requireWorld("NamedMaterial", loc);
-  auto it = desc_.namedMaterials.find(name);
-  if (it == desc_.namedMaterials.end())
+  const ScopedNames::Definition* def = namedMaterialNames_.find(name);
+  if (!def)
     throw SceneError(loc, "unknown named material '" + name + "' (not made by MakeNamedMaterial)");
-  state_.material = it->second;
+  state_.material = def->index;
 }
 
 void SceneBuilder::bumpMap(const std::string& name, ParamSet params, const FileLoc& loc) {
@@ -440,6 +490,7 @@ void SceneBuilder::shape(const std::string& name, ParamSet params, const FileLoc
   requireWorld("Shape", loc);
   ShapeDesc s;
   static_cast<PluginDesc&>(s) = plugin(name, std::move(params), loc);
+  s.textures = bindTextures(s.params);  // "alpha", "shadowalpha"
   s.objectToWorld = animatedCtm();
   s.reverseOrientation = state_.reverseOrientation;
   s.material = state_.material;

@@ -13,6 +13,7 @@
 
 #include "scene/parser_target.h"
 #include "scene/scene_description.h"
+#include "scene/scoped_names.h"
 
 namespace candela {
 
@@ -97,7 +98,8 @@ class SceneBuilder : public ParserTarget {
     FileLoc loc;
     std::array<Transform, 2> ctm;
     int activeBits;
-    GraphicsState state;  // restored by AttributeEnd / ObjectEnd only
+    GraphicsState state;               // restored by AttributeEnd / ObjectEnd only
+    size_t textureMark, materialMark;  // so are the named textures and materials
   };
   enum class Block { Options, World };
 
@@ -112,6 +114,11 @@ class SceneBuilder : public ParserTarget {
   void option(PluginDesc& slot, const char* statement, const std::string& name, ParamSet params,
               const FileLoc& loc);
   void resetForNextFrame();
+  int attributeDepth() const;
+  // The texture names params' "texture" items use, as defined here.
+  TextureBindings bindTextures(const ParamSet& params) const;
+  // A mix's "string namedmaterial1/2", as defined here.
+  std::map<std::string, int> bindNamedMaterials(const ParamSet& params) const;
 
   std::function<void(SceneDescription&&)> onWorldEnd_;
   WarningCallback warn_;
@@ -123,7 +130,8 @@ class SceneBuilder : public ParserTarget {
   GraphicsState state_;
   std::vector<Pushed> stack_;
   std::map<std::string, std::array<Transform, 2>> namedCoordinateSystems_;
-  std::map<std::string, int> textureNames_;   // for redefinition warnings
+  ScopedNames textureNames_;        // "float:name" / "spectrum:name" -> index into textures
+  ScopedNames namedMaterialNames_;  // name -> index into materials
   std::map<std::string, int> instanceNames_;  // name -> index into instanceDefinitions
   int currentInstance_ = -1;                  // open ObjectBegin, or -1
   SceneDescription desc_;

@@ -20,10 +20,21 @@ struct AnimatedTransformDesc {
   bool isAnimated() const { return start != end; }
 };
 
+// The definition each texture name means at a statement (pbrt 3e App. B: named textures are
+// graphics state, so a statement sees the definitions in effect where it is written): name ->
+// index into SceneDescription::textures, for the names the statement's "texture" parameters use.
+struct TextureBindings {
+  std::map<std::string, int> floats, spectra;
+};
+
 struct PluginDesc {
   std::string name;  // plug-in name: "sphere", "matte", "perspective", ...
   ParamSet params;
   FileLoc loc;
+  // Set by SceneBuilder on textures, materials and shapes. Absent (descriptions made by hand): a
+  // name means its latest definition before the statement, or the latest of all for a material
+  // or shape.
+  std::optional<TextureBindings> textures = std::nullopt;
 };
 
 struct CameraDesc : PluginDesc {
@@ -34,12 +45,16 @@ struct CameraDesc : PluginDesc {
 
 struct MaterialDesc : PluginDesc {
   std::optional<PluginDesc> bumpMap;  // lrt's BumpMap statement in effect, if any
+  // A mix's named materials as in effect at its statement (pbrt-v3: named materials are graphics
+  // state too): name -> index into SceneDescription::materials. Absent: SceneDescription's
+  // namedMaterials.
+  std::optional<std::map<std::string, int>> namedMaterials;
 };
 
 struct TextureDesc : PluginDesc {  // PluginDesc::name is the texture class ("imagemap", ...)
   std::string textureName;         // the name materials refer to
   std::string type;                // "float" or "spectrum" ("color" is read as "spectrum")
-  Transform worldToTexture;        // inverse of the CTM at the Texture statement
+  Transform textureToWorld;        // the CTM at the Texture statement
 };
 
 struct ShapeDesc : PluginDesc {
@@ -90,7 +105,7 @@ struct SceneDescription {
 
   // World block.
   std::vector<MaterialDesc> materials;        // every Material / MakeNamedMaterial statement
-  std::map<std::string, int> namedMaterials;  // name -> index into materials
+  std::map<std::string, int> namedMaterials;  // name -> index into materials, as at WorldEnd
   std::vector<TextureDesc> textures;          // in statement order; later ones shadow earlier
   std::vector<ShapeDesc> shapes;
   std::vector<LightDesc> lights;

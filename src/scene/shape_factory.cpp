@@ -23,16 +23,35 @@ CreatedShapes::CreatedShapes(CreatedShapes&&) noexcept = default;
 
 namespace {
 
-// pbrt-v2's cut-outs: "alpha" (a float texture or constant; 1, opaque, needs no test) and
-// "shadowalpha" for occlusion queries, which defaults to alpha.
+// Zero where either texture is zero, else one: a cut-out for shadow rays.
+class EitherZeroTexture : public Texture<Float> {
+ public:
+  EitherZeroTexture(const Texture<Float>* a, const Texture<Float>* b) : a_(a), b_(b) {}
+  Float evaluate(const SurfaceInteraction& si) const override {
+    return a_->evaluate(si) == 0 || b_->evaluate(si) == 0 ? 0 : 1;
+  }
+
+ private:
+  const Texture<Float>* a_;
+  const Texture<Float>* b_;
+};
+
+// Cut-outs: "alpha" (a float texture or constant; 1, opaque, needs no test) removes hits where it
+// is 0 for every ray; pbrt-v3's "shadowalpha" removes more for shadow rays only, which pass where
+// either is 0 (pbrt-v3 Triangle::IntersectP tests both; pbrt-v2 had alpha alone).
 void readAlpha(const ShapeDesc& desc, TextureFactory& textures, TriangleMesh* mesh) {
   auto read = [&](const char* name) -> const Texture<Float>* {
     if (desc.params.getTexture(name).empty() && desc.params.getOneFloat(name, 1) == 1)
       return nullptr;
-    return textures.scalar(desc.params, name, 1, desc.loc);
+    return textures.scalar(desc, name, 1);
   };
   mesh->alpha = read("alpha");
-  mesh->shadowAlpha = desc.params.find("shadowalpha") ? read("shadowalpha") : mesh->alpha;
+  const Texture<Float>* shadow = read("shadowalpha");
+  if (mesh->alpha && shadow)
+    mesh->shadowAlpha =
+        textures.adopt<Float>(std::make_unique<EitherZeroTexture>(mesh->alpha, shadow));
+  else
+    mesh->shadowAlpha = shadow ? shadow : mesh->alpha;
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ struct CreatedShapes {
 
 class TextureFactory;
 
-// Triangle meshes' "alpha" and "shadowalpha" (pbrt-v2 cut-outs, float textures or constants) come
+// Triangle meshes' "alpha" and "shadowalpha" (pbrt-v3 cut-outs, float textures or constants) come
 // from textures. subdiv picks the code that refines "loopsubdiv" (the same surface either way).
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
                            TextureFactory& textures, LoopProducer subdiv = LoopProducer::Book);

@@ -36,13 +36,13 @@ std::unique_ptr<Material> createSubsurfaceMaterial(const MaterialDesc& d, Textur
                                                    const Texture<Float>* bump) {
   const ParamSet& p = d.params;
   Float eta = positiveFloat(d, "index", 1.33f);
-  const Texture<Spectrum>* kr = textures.spectrum(p, "Kr", Spectrum(1), d.loc);
+  const Texture<Spectrum>* kr = textures.spectrum(d, "Kr", Spectrum(1));
   if (d.name == "kdsubsurface") {
-    const Texture<Spectrum>* kd = textures.spectrum(p, "Kd", Spectrum(0.5f), d.loc);
+    const Texture<Spectrum>* kd = textures.spectrum(d, "Kd", Spectrum(0.5f));
     const ParamItem* mfp = p.find("meanfreepath");
     if (!mfp || mfp->type != ParamType::Texture) positiveFloat(d, "meanfreepath", 1);
-    return std::make_unique<KdSubsurfaceMaterial>(kd, textures.scalar(p, "meanfreepath", 1, d.loc),
-                                                  eta, kr, bump);
+    return std::make_unique<KdSubsurfaceMaterial>(kd, textures.scalar(d, "meanfreepath", 1), eta,
+                                                  kr, bump);
   }
   // pbrt-v2's defaults are whole milk's coefficients.
   MeasuredSubsurface medium{{2.55f, 3.21f, 3.77f}, {0.0011f, 0.0024f, 0.014f}};
@@ -62,8 +62,8 @@ std::unique_ptr<Material> createSubsurfaceMaterial(const MaterialDesc& d, Textur
   requireNonNegativeSpectrum(d, "sigma_prime_s");
   Float scale = positiveFloat(d, "scale", 1);
   return std::make_unique<SubsurfaceMaterial>(
-      scale, textures.spectrum(p, "sigma_a", medium.sigmaA, d.loc),
-      textures.spectrum(p, "sigma_prime_s", medium.sigmaPrimeS, d.loc), eta, kr, bump);
+      scale, textures.spectrum(d, "sigma_a", medium.sigmaA),
+      textures.spectrum(d, "sigma_prime_s", medium.sigmaPrimeS), eta, kr, bump);
 }
 
 }  // namespace candela

@@ -54,38 +54,50 @@ TextureFactory::Store<Float>& TextureFactory::store<Float>() {
 }
 
 std::optional<size_t> TextureFactory::find(const std::string& textureName, const std::string& type,
-                                           size_t visible) const {
+                                           size_t visible, const TextureBindings* bindings) const {
+  if (bindings) {
+    const std::map<std::string, int>& m = type == "float" ? bindings->floats : bindings->spectra;
+    auto it = m.find(textureName);
+    if (it == m.end() || it->second < 0 || size_t(it->second) >= descs_.size()) return std::nullopt;
+    return size_t(it->second);
+  }
   for (size_t i = std::min(visible, descs_.size()); i-- > 0;)
     if (descs_[i].textureName == textureName && descs_[i].type == type) return i;
   return std::nullopt;
 }
 
 const Texture<Spectrum>* TextureFactory::spectrum(const ParamSet& params, const std::string& name,
-                                                  const Spectrum& def, const FileLoc& loc) {
-  return parameter<Spectrum>(params, name, def, loc, descs_.size());
+                                                  const Spectrum& def, const FileLoc& loc,
+                                                  const TextureBindings* bindings) {
+  return parameter<Spectrum>(params, name, def, loc, descs_.size(), bindings);
 }
 
 const Texture<Float>* TextureFactory::scalar(const ParamSet& params, const std::string& name,
-                                             Float def, const FileLoc& loc) {
-  return parameter<Float>(params, name, def, loc, descs_.size());
+                                             Float def, const FileLoc& loc,
+                                             const TextureBindings* bindings) {
+  return parameter<Float>(params, name, def, loc, descs_.size(), bindings);
 }
 
 template <typename T>
 const Texture<T>* TextureFactory::parameter(const ParamSet& params, const std::string& name,
-                                            const T& def, const FileLoc& loc, size_t visible) {
+                                            const T& def, const FileLoc& loc, size_t visible,
+                                            const TextureBindings* bindings) {
   std::string texName = params.getTexture(name);
   if (texName.empty()) {
     store<T>().owned.push_back(std::make_unique<ConstantTexture<T>>(getOne(params, name, def)));
     return store<T>().owned.back().get();
   }
-  if (std::optional<size_t> index = find(texName, typeName<T>(), visible)) return named<T>(*index);
+  if (std::optional<size_t> index = find(texName, typeName<T>(), visible, bindings))
+    return named<T>(*index);
   FileLoc where = params.locationOf(name, loc);
   const char* other = std::is_same_v<T, Float> ? "spectrum" : "float";
-  if (find(texName, other, visible))
+  if (find(texName, other, visible, bindings))
     throw SceneError(where, "texture '" + texName + "' is a " + other +
                                 " texture, but parameter '" + name + "' needs a " + typeName<T>() +
                                 " texture");
-  std::string before = visible < descs_.size() ? " defined before this texture" : "";
+  std::string before = bindings                  ? " in effect at this statement"
+                       : visible < descs_.size() ? " defined before this texture"
+                                                 : "";
   throw SceneError(where, std::string("no ") + typeName<T>() + " texture named '" + texName + "'" +
                               before + " for parameter '" + name + "'");
 }
@@ -126,11 +138,15 @@ const Texture<T>* TextureFactory::named(size_t index) {
 template <typename T>
 std::unique_ptr<Texture<T>> TextureFactory::create(const TextureDesc& d, size_t index) {
   const ParamSet& p = d.params;
+  const TextureBindings* bindings = d.textures ? &*d.textures : nullptr;
   auto tex = [&](const std::string& name, const T& def) {
-    return parameter<T>(p, name, def, d.loc, index);
+    return parameter<T>(p, name, def, d.loc, index, bindings);
   };
-  auto mapping2D = [&] { return createMapping2D(p, d.worldToTexture, d.loc); };
-  auto mapping3D = [&] { return TextureMapping3D(d.worldToTexture); };
+  auto mapping2D = [&] { return createMapping2D(p, d.textureToWorld, d.loc); };
+  // pbrt-v2 and v3 hand the CTM itself to the 3D mapping as its world-to-texture transform, so a
+  // Scale 3 before the Texture statement makes the pattern three times finer; scenes are written
+  // for that.
+  auto mapping3D = [&] { return TextureMapping3D(d.textureToWorld); };
   const std::string& c = d.name;
 
   if (c == "constant") return std::make_unique<ConstantTexture<T>>(getOne<T>(p, "value", T(1)));
@@ -138,8 +154,8 @@ std::unique_ptr<Texture<T>> TextureFactory::create(const TextureDesc& d, size_t 
   if (c == "mix") {
     const Texture<T>* t1 = tex("tex1", T(0));
     const Texture<T>* t2 = tex("tex2", T(1));
-    return std::make_unique<MixTexture<T>>(t1, t2,
-                                           parameter<Float>(p, "amount", 0.5f, d.loc, index));
+    return std::make_unique<MixTexture<T>>(
+        t1, t2, parameter<Float>(p, "amount", 0.5f, d.loc, index, bindings));
   }
   if (c == "bilerp")
     return std::make_unique<BilerpTexture<T>>(mapping2D(), getOne<T>(p, "v00", T(0)),
@@ -171,9 +187,12 @@ std::unique_ptr<Texture<T>> TextureFactory::create(const TextureDesc& d, size_t 
     return std::make_unique<Checkerboard2DTexture<T>>(mapping2D(), t1, t2, mode);
   }
   if (c == "dots") {
-    const Texture<T>* inside = tex("inside", T(1));
-    const Texture<T>* outside = tex("outside", T(0));
-    return std::make_unique<DotsTexture<T>>(mapping2D(), outside, inside);
+    // pbrt-v2 and v3 hand "inside" to the dots texture's outside slot and "outside" to its inside
+    // (their constructor takes the two in the opposite order to their factory), so in every
+    // pbrt scene the "inside" value fills the space between the dots. Files mean what pbrt shows.
+    const Texture<T>* between = tex("inside", T(1));
+    const Texture<T>* dots = tex("outside", T(0));
+    return std::make_unique<DotsTexture<T>>(mapping2D(), between, dots);
   }
   if (c == "fbm")
     return std::make_unique<FBmTexture<T>>(mapping3D(), p.getOneInt("octaves", 8),
@@ -210,8 +229,19 @@ std::unique_ptr<Texture<T>> TextureFactory::createImageTexture(const TextureDesc
                      "unknown wrap mode '" + wrapName + "' (known: repeat, black, clamp)");
   Float maxAnisotropy = p.getOneFloat("maxanisotropy", 8);
   bool trilinear = p.getOneBool("trilinear", false);
-  Float scale = p.getOneFloat("scale", 1), gamma = p.getOneFloat("gamma", 1);
-  std::unique_ptr<TextureMapping2D> mapping = createMapping2D(p, d.worldToTexture, d.loc);
+  Float scale = p.getOneFloat("scale", 1), gamma = 1;
+  // "gamma" is pbrt-v3's bool (true: the numbers are sRGB-encoded, false: linear, whatever the
+  // pixel type; absent, pbrt-v3 decodes PNG and TGA only, which the default rule does) or
+  // pbrt-v2's float exponent applied after the scale. A "string colorspace" overrides the bool.
+  if (const ParamItem* g = p.find("gamma")) {
+    if (g->type == ParamType::Bool) {
+      bool encoded = p.getOneBool("gamma", false);
+      if (colorSpace.empty()) colorSpace = encoded ? kSrgbEncoded : kStoredLinear;
+    } else {
+      gamma = p.getOneFloat("gamma", 1);
+    }
+  }
+  std::unique_ptr<TextureMapping2D> mapping = createMapping2D(p, d.textureToWorld, d.loc);
 
   MipKey key{path, colorSpace, *wrap, scale, gamma};
   auto& cache = store<T>().mipmaps;
@@ -222,9 +252,9 @@ std::unique_ptr<Texture<T>> TextureFactory::createImageTexture(const TextureDesc
     const ImageBuffer& img = image(path, colorSpace, d);
     std::vector<T> texels;
     if constexpr (std::is_same_v<T, Float>)
-      texels = floatTexels(img, scale, gamma);
+      texels = bottomRowFirst(floatTexels(img, scale, gamma), img.width);
     else
-      texels = spectrumTexels(img, scale, gamma);
+      texels = bottomRowFirst(spectrumTexels(img, scale, gamma), img.width);
     try {
       mipmap = std::make_shared<const MIPMap<T>>(img.width, img.height, std::move(texels), *wrap);
     } catch (const std::invalid_argument& e) {

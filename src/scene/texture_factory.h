@@ -3,10 +3,11 @@
 //
 // Texture classes (pbrt-v2's names, parameters and defaults; src/textures/ documents each):
 // constant, scale, mix, bilerp, uv, checkerboard, dots, fbm, wrinkled, windy, marble, imagemap.
-// A texture's own parameters (tex1, tex2, amount, inside, outside) may name other textures; as
-// in pbrt, where textures are made at their statement, such a name means the latest definition
-// *before* the referring texture, so references can never form a cycle. Materials see the last
-// definition of each name.
+// A name in a texture's, material's or shape's parameters means the definition bound to it at
+// that statement (PluginDesc::textures, from SceneBuilder: pbrt's graphics-state scoping), so a
+// texture only ever names earlier textures and references cannot form a cycle. Descriptions
+// without bindings (made by hand) read a name as its latest definition before the texture, or the
+// latest of all for a material.
 //
 // Image textures read their files through the ImageLoader (candela_io's loadTextureImage in the
 // renderer: OpenImageIO + OpenColorIO), one load per (path, colour space) however many textures
@@ -34,10 +35,15 @@ namespace candela {
 class TextureFactory {
  public:
   // Reads the image at path converted from colorSpace ("": the default rule, sRGB for integer
-  // pixels and scene_linear for float pixels) to the rendering space (scene_linear, or the
-  // --colorspace working space). Throws naming the path.
+  // pixels and scene_linear for float pixels; kSrgbEncoded or kStoredLinear: the space the
+  // default rule gives integer or float pixels, whatever the file's pixel type; else an OCIO
+  // name) to the rendering space (scene_linear, or the --colorspace working space). Throws naming
+  // the path.
   using ImageLoader =
       std::function<ImageBuffer(const std::string& path, const std::string& colorSpace)>;
+  // pbrt-v3's "bool gamma" true and false (not OCIO names: '<' cannot start one).
+  static constexpr const char* kSrgbEncoded = "<srgb-encoded>";
+  static constexpr const char* kStoredLinear = "<stored-linear>";
   using Warn = std::function<void(const FileLoc&, const std::string&)>;
 
   explicit TextureFactory(const std::vector<TextureDesc>& descs, ImageLoader loadImage = {},
@@ -50,9 +56,25 @@ class TextureFactory {
   // else a constant of the given value (or def when absent). Throws SceneError for a missing
   // texture, one of the other type, an unknown class or bad parameters.
   const Texture<Spectrum>* spectrum(const ParamSet& params, const std::string& name,
-                                    const Spectrum& def, const FileLoc& loc);
+                                    const Spectrum& def, const FileLoc& loc,
+                                    const TextureBindings* bindings = nullptr);
   const Texture<Float>* scalar(const ParamSet& params, const std::string& name, Float def,
-                               const FileLoc& loc);
+                               const FileLoc& loc, const TextureBindings* bindings = nullptr);
+  // The same for a statement's parameters, with the names bound at that statement.
+  const Texture<Spectrum>* spectrum(const PluginDesc& d, const std::string& name,
+                                    const Spectrum& def) {
+    return spectrum(d.params, name, def, d.loc, d.textures ? &*d.textures : nullptr);
+  }
+  const Texture<Float>* scalar(const PluginDesc& d, const std::string& name, Float def) {
+    return scalar(d.params, name, def, d.loc, d.textures ? &*d.textures : nullptr);
+  }
+
+  // Keeps t alive as long as the textures made here (a texture built from made ones).
+  template <typename T>
+  const Texture<T>* adopt(std::unique_ptr<Texture<T>> t) {
+    store<T>().owned.push_back(std::move(t));
+    return store<T>().owned.back().get();
+  }
 
   int texturesCreated() const { return created_; }  // named textures (not inline constants)
   int imagesLoaded() const { return imagesLoaded_; }
@@ -72,10 +94,10 @@ class TextureFactory {
   template <typename T>
   Store<T>& store();
 
-  // Textures may only name textures defined before index `visible` (see above).
+  // Without bindings, textures may only name textures defined before index `visible` (see above).
   template <typename T>
   const Texture<T>* parameter(const ParamSet& params, const std::string& name, const T& def,
-                              const FileLoc& loc, size_t visible);
+                              const FileLoc& loc, size_t visible, const TextureBindings* bindings);
   template <typename T>
   const Texture<T>* named(size_t index);
   template <typename T>
@@ -83,7 +105,7 @@ class TextureFactory {
   template <typename T>
   std::unique_ptr<Texture<T>> createImageTexture(const TextureDesc& d);
   std::optional<size_t> find(const std::string& textureName, const std::string& type,
-                             size_t visible) const;
+                             size_t visible, const TextureBindings* bindings) const;
   const ImageBuffer& image(const std::string& path, const std::string& colorSpace,
                            const TextureDesc& d);
 

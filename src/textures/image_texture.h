@@ -17,9 +17,21 @@ namespace candela {
 // channel (gamma 1 leaves v unchanged; otherwise negative values become 0 first). Channels R, G, B
 // are found by name, else the first three are used; a one- or two-channel image is grey (its
 // first channel). Float texels are the luminance of the RGB, computed before scale and gamma (as
-// pbrt-v2). The image's first row becomes texel row 0.
+// pbrt-v2). The image's first row becomes texel row 0 (see bottomRowFirst).
 std::vector<Spectrum> spectrumTexels(const ImageBuffer& image, Float scale, Float gamma);
 std::vector<Float> floatTexels(const ImageBuffer& image, Float scale, Float gamma);
+
+// The rows of a width-wide image in reverse order. Image textures read their texels so, since
+// pbrt-v3 puts (s, t) = (0, 0) at the image's lower left corner (pbrt-v2 at its upper left).
+template <typename T>
+std::vector<T> bottomRowFirst(const std::vector<T>& texels, int width) {
+  std::vector<T> flipped;
+  flipped.reserve(texels.size());
+  for (size_t end = texels.size(); end >= size_t(width) && width > 0; end -= size_t(width))
+    flipped.insert(flipped.end(), texels.begin() + std::ptrdiff_t(end - size_t(width)),
+                   texels.begin() + std::ptrdiff_t(end));
+  return flipped;
+}
 
 template <typename T>
 class ImageTexture : public Texture<T> {

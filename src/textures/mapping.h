@@ -57,8 +57,8 @@ class CylindricalMapping2D : public TextureMapping2D {
 };
 
 // s = ds + q.vs, t = dt + q.vt for the texture-space point q (§11.3.4), exact derivatives. (The
-// draft and pbrt-v2 project the world-space point; like pbrt-v3 we project the texture-space
-// point, so the plane moves with the Texture statement's transform.)
+// draft, pbrt-v2 and pbrt-v3 project the world-space point, and createMapping2D passes the
+// identity for that; the transform is here for callers that want the plane to move.)
 class PlanarMapping2D : public TextureMapping2D {
  public:
   PlanarMapping2D(const Vector3f& vs, const Vector3f& vt, Float ds, Float dt,
@@ -79,8 +79,8 @@ struct TexCoord3D {
 
 // The texture-space point q = worldToTexture(p) (§11.3.5), its derivatives transformed exactly
 // (the transform is linear; the draft's forward difference is not needed). worldToTexture is
-// the inverse of the CTM at the Texture statement. (pbrt-v2 and v3 pass the CTM itself to their
-// 3D mapping, so a scaled solid texture there shrinks where ours grows.)
+// the CTM at the Texture statement itself, as pbrt-v2 and v3 use it (not its inverse), so a scaled
+// solid texture shrinks rather than grows.
 class TextureMapping3D {
  public:
   explicit TextureMapping3D(const Transform& worldToTexture) : worldToTexture_(worldToTexture) {}

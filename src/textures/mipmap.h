@@ -14,7 +14,8 @@
 // extends the edges like "clamp", since the resampled image covers the same [0, 1]^2.
 //
 // Texel (i, j) of a level of size w x h is centred at ((i + .5) / w, (j + .5) / h); row j = 0 is
-// the first row of the image file (t = 0 at the top, as pbrt-v2).
+// the first row of the texels given (image textures give the image's last row first, so t = 0 is
+// at the bottom, as pbrt-v3: see bottomRowFirst).
 #pragma once
 
 #include <optional>

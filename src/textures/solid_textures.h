@@ -64,6 +64,9 @@ class WindyTexture : public Texture<T> {
 // Marble (§11.7.5) with pbrt-v2's parameters: p is scaled by `scale`, perturbed along y by
 // variation * FBm, and t = .5 + .5 sin(p.y') indexes a cubic Bezier spline through fixed stone
 // colours, scaled by 1.5 (pbrt-v2's form; the draft fixes scale .05 and uses |sin(5 marble)|).
+// Deliberately not pbrt-v3's: it picks the spline segment as min(1, floor(6t)), so for t > 1/3 it
+// extrapolates the cubic far outside the table (reflectances up to about 40; pbrt-v3 issue #252).
+// Its renders of marble are brighter, with overexposed bands; with its segment rule ours agree.
 class MarbleTexture : public Texture<Spectrum> {
  public:
   MarbleTexture(TextureMapping3D mapping, int octaves, Float omega, Float scale, Float variation)

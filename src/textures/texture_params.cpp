@@ -3,7 +3,7 @@
 namespace candela {
 
 std::unique_ptr<TextureMapping2D> createMapping2D(const ParamSet& params,
-                                                  const Transform& worldToTexture,
+                                                  const Transform& textureToWorld,
                                                   const FileLoc& loc) {
   std::string type = params.getOneString("mapping", "uv");
   if (type == "uv") {
@@ -13,13 +13,13 @@ std::unique_ptr<TextureMapping2D> createMapping2D(const ParamSet& params,
     Float dv = params.getOneFloat("vdelta", params.getOneFloat("dv", 0));
     return std::make_unique<UVMapping2D>(su, sv, du, dv);
   }
-  if (type == "spherical") return std::make_unique<SphericalMapping2D>(worldToTexture);
-  if (type == "cylindrical") return std::make_unique<CylindricalMapping2D>(worldToTexture);
+  if (type == "spherical") return std::make_unique<SphericalMapping2D>(inverse(textureToWorld));
+  if (type == "cylindrical") return std::make_unique<CylindricalMapping2D>(inverse(textureToWorld));
   if (type == "planar")
     return std::make_unique<PlanarMapping2D>(params.getOneVector3f("v1", Vector3f(1, 0, 0)),
                                              params.getOneVector3f("v2", Vector3f(0, 1, 0)),
                                              params.getOneFloat("udelta", 0),
-                                             params.getOneFloat("vdelta", 0), worldToTexture);
+                                             params.getOneFloat("vdelta", 0), Transform());
   throw SceneError(
       params.locationOf("mapping", loc),
       "unknown texture mapping '" + type + "' (known: uv, spherical, cylindrical, planar)");

@@ -1,9 +1,11 @@
 // Textures in whole scenes: an image texture nobody uses is never read (so a missing file does
 // not matter), a used missing one is an error naming the path and the statement, and every
 // texture class survives grazing footprints (a ground plane out to the horizon, where the
-// ray differentials become huge) without NaN or infinite pixels.
+// ray differentials become huge) without NaN or infinite pixels; each shape uses the texture
+// definition in effect at its statement.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.h"
@@ -112,6 +114,38 @@ TEST(TextureScenes, EveryTextureSurvivesGrazingFootprints) {
       }
     EXPECT_GT(lit, 0) << t;
   }
+}
+
+// pbrt-v3: named textures are graphics state. Three quads each define "m" (red, green, blue) in
+// their own AttributeBegin/End; each must show its own colour, not the last definition.
+TEST(TextureScenes, EachShapeUsesTheTextureDefinedInItsBlock) {
+  std::string scene =
+      "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [40]\n"
+      "Film \"image\" \"integer xresolution\" [30] \"integer yresolution\" [10]\n"
+      "Sampler \"stratified\" \"integer xsamples\" [1] \"integer ysamples\" [1]\n"
+      "SurfaceIntegrator \"directlighting\"\nWorldBegin\n"
+      "LightSource \"distant\" \"point from\" [0 0 5] \"point to\" [0 0 0] \"rgb L\" [3 3 3]\n";
+  const char* colours[] = {"1 0 0", "0 1 0", "0 0 1"};
+  const char* offsets[] = {"-1.2", "0", "1.2"};
+  for (int i = 0; i < 3; ++i)
+    scene += std::string("AttributeBegin\nTexture \"m\" \"color\" \"constant\" \"rgb value\" [") +
+             colours[i] + "]\nTranslate " + offsets[i] +
+             " 0 0\nMaterial \"matte\" \"texture Kd\" \"m\"\n"
+             "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point P\" "
+             "[-.5 -.5 0  .5 -.5 0  .5 .5 0  -.5 .5 0]\nAttributeEnd\n";
+  scene += "WorldEnd\n";
+  auto r = test::renderSceneText(scene);
+  // The quads' centres fall on pixel columns 11, 15 and 18 of row 5.
+  std::vector<int> dominant;
+  for (int x : {11, 15, 18}) {
+    Spectrum v = r.film().pixelValue(Point2i(x, 5));
+    int c = v[0] > v[1] && v[0] > v[2] ? 0 : v[1] > v[2] ? 1 : 2;
+    EXPECT_GT(v[c], 0.1f) << x;
+    EXPECT_EQ(v[(c + 1) % 3] + v[(c + 2) % 3], 0.f) << x;
+    dominant.push_back(c);
+  }
+  std::sort(dominant.begin(), dominant.end());
+  EXPECT_EQ(dominant, (std::vector<int>{0, 1, 2}));
 }
 
 }  // namespace

@@ -550,3 +550,84 @@ TEST(SceneBuilderRobustness, BinaryGarbageAndHugeInputs) {
   EXPECT_THROW(build(std::string(100000, '[')), SceneError);
   EXPECT_THROW(build(std::string(100000, ']')), SceneError);
 }
+
+// pbrt-v3: named textures and named materials are graphics state. A statement binds the
+// definitions in effect where it is written; AttributeEnd (and ObjectEnd) restores the outer ones.
+TEST(SceneBuilder, TexturesAndNamedMaterialsAreScopedByAttributes) {
+  Built b = build(
+      "WorldBegin\n"
+      "Texture \"m\" \"color\" \"constant\" \"rgb value\" [0 0 0]\n"  // 0
+      "AttributeBegin\n"
+      "Texture \"m\" \"color\" \"constant\" \"rgb value\" [1 0 0]\n"  // 1
+      "Material \"matte\" \"texture Kd\" \"m\"\nShape \"sphere\"\n"
+      "AttributeEnd\n"
+      "AttributeBegin\n"
+      "Texture \"m\" \"color\" \"constant\" \"rgb value\" [0 1 0]\n"  // 2
+      "Texture \"n\" \"color\" \"scale\" \"texture tex1\" \"m\"\n"    // 3
+      "MakeNamedMaterial \"inner\" \"string type\" \"matte\" \"texture Kd\" \"n\"\n"
+      "Material \"matte\" \"texture Kd\" \"m\"\nShape \"sphere\"\n"
+      "AttributeEnd\n"
+      "Material \"matte\" \"texture Kd\" \"m\"\nShape \"trianglemesh\" \"texture alpha\" \"f\"\n"
+      "Texture \"f\" \"float\" \"constant\"\n"  // 4
+      "Texture \"m\" \"float\" \"constant\"\n"  // 5
+      "Material \"matte\" \"texture Kd\" \"m\"\n"
+      "WorldEnd");
+  ASSERT_EQ(b.frames.size(), 1u);
+  const SceneDescription& d = b.frames[0];
+  ASSERT_EQ(d.textures.size(), 6u);
+  ASSERT_EQ(d.shapes.size(), 3u);
+  auto kdOf = [&](const ShapeDesc& s) {
+    const MaterialDesc& m = d.materials.at(size_t(s.material));
+    EXPECT_TRUE(m.textures.has_value());
+    return m.textures->spectra.at("m");
+  };
+  EXPECT_EQ(kdOf(d.shapes[0]), 1);
+  EXPECT_EQ(kdOf(d.shapes[1]), 2);
+  EXPECT_EQ(kdOf(d.shapes[2]), 0);  // the blocks' definitions ended with them
+  // A texture binds the names it uses at its own statement.
+  ASSERT_TRUE(d.textures[3].textures.has_value());
+  EXPECT_EQ(d.textures[3].textures->spectra.at("m"), 2);
+  // Names defined later are not bound; a float texture of the same name is bound separately.
+  ASSERT_TRUE(d.shapes[2].textures.has_value());
+  EXPECT_EQ(d.shapes[2].textures->floats.count("f"), 0u);
+  const MaterialDesc& last = d.materials.back();
+  EXPECT_EQ(last.textures->spectra.at("m"), 0);
+  EXPECT_EQ(last.textures->floats.at("m"), 5);
+  // The named material made inside the second block is gone after it.
+  EXPECT_EQ(d.namedMaterials.count("inner"), 0u);
+  // Shadowing inside a block is the normal scoped case: no warning.
+  for (const std::string& w : b.warnings) EXPECT_EQ(w.find("redefined"), std::string::npos) << w;
+  EXPECT_EQ(errorOf("WorldBegin\nAttributeBegin\nMakeNamedMaterial \"gold\" \"string type\" "
+                    "\"metal\"\nAttributeEnd\nNamedMaterial \"gold\"\nWorldEnd"),
+            "s.pbrt:5:1: error: unknown named material 'gold' (not made by MakeNamedMaterial)");
+}
+
+TEST(SceneBuilder, RedefinitionInTheSameBlockWarns) {
+  Built b = build(
+      "WorldBegin\nAttributeBegin\nTexture \"m\" \"float\" \"constant\"\n"
+      "Texture \"m\" \"float\" \"fbm\"\nMakeNamedMaterial \"g\" \"string type\" \"matte\"\n"
+      "MakeNamedMaterial \"g\" \"string type\" \"metal\"\nAttributeEnd\nWorldEnd");
+  ASSERT_EQ(b.warnings.size(), 2u);
+  EXPECT_EQ(b.warnings[0],
+            "s.pbrt:4:1: float texture 'm' redefined in the same attribute block (first defined at "
+            "s.pbrt:3:1)");
+  EXPECT_EQ(b.warnings[1],
+            "s.pbrt:6:1: named material 'g' redefined in the same attribute block (first defined "
+            "at s.pbrt:5:1)");
+}
+
+// A mix material binds the named materials in effect at its statement.
+TEST(SceneBuilder, MixBindsNamedMaterialsWhereWritten) {
+  SceneDescription d = one(
+      "WorldBegin\nMakeNamedMaterial \"a\" \"string type\" \"matte\"\n"
+      "MakeNamedMaterial \"b\" \"string type\" \"mirror\"\n"
+      "AttributeBegin\nMakeNamedMaterial \"a\" \"string type\" \"glass\"\n"
+      "Material \"mix\" \"string namedmaterial1\" \"a\" \"string namedmaterial2\" \"b\"\n"
+      "AttributeEnd\nMaterial \"mix\" \"string namedmaterial1\" \"a\" \"string namedmaterial2\" "
+      "\"b\"\nWorldEnd");
+  ASSERT_EQ(d.materials.size(), 5u);
+  ASSERT_TRUE(d.materials[3].namedMaterials.has_value());
+  EXPECT_EQ(d.materials[d.materials[3].namedMaterials->at("a")].name, "glass");
+  EXPECT_EQ(d.materials[d.materials[4].namedMaterials->at("a")].name, "matte");
+  EXPECT_EQ(d.materials[d.materials[4].namedMaterials->at("b")].name, "mirror");
+}

@@ -4,6 +4,7 @@
 
 #include "scene/texture_factory.h"
 #include "support/param_items.h"
+#include "textures/dots.h"
 #include "textures/image_texture.h"
 
 using namespace candela;
@@ -300,4 +301,137 @@ TEST(TextureFactory, ImageScaleAndGamma) {
   EXPECT_FLOAT_EQ(f.scalar(test::paramSet({test::texture("x", "g")}), "x", 0, kMatLoc)
                       ->evaluate(atUV(0.3f, 0.3f)),
                   0.25f);  // (2 * 0.25)^2
+}
+
+// With bindings (SceneBuilder's graphics-state scoping), a name means the definition bound at the
+// statement, not the latest one; a name bound to nothing is an error at the parameter.
+TEST(TextureFactory, BindingsChooseTheDefinitionInEffect) {
+  std::vector<TextureDesc> descs = {
+      tex("m", "float", "constant", {test::floats("value", {0.1f})}, 1),
+      tex("m", "float", "constant", {test::floats("value", {0.2f})}, 2),
+      tex("s", "float", "scale", {test::texture("tex1", "m")}, 3),
+  };
+  descs[2].textures = TextureBindings{{{"m", 0}}, {}};
+  TextureFactory f(descs);
+  ParamSet uses = test::paramSet({test::texture("x", "m")});
+  TextureBindings first{{{"m", 0}}, {}}, second{{{"m", 1}}, {}};
+  EXPECT_FLOAT_EQ(f.scalar(uses, "x", 0, kMatLoc, &first)->evaluate(atUV(0, 0)), 0.1f);
+  EXPECT_FLOAT_EQ(f.scalar(uses, "x", 0, kMatLoc, &second)->evaluate(atUV(0, 0)), 0.2f);
+  // Without bindings: the latest definition.
+  EXPECT_FLOAT_EQ(f.scalar(uses, "x", 0, kMatLoc)->evaluate(atUV(0, 0)), 0.2f);
+  // "s" names the "m" bound at its statement, though a later one exists.
+  TextureBindings s{{{"s", 2}}, {}};
+  EXPECT_FLOAT_EQ(f.scalar(test::paramSet({test::texture("x", "s")}), "x", 0, kMatLoc, &s)
+                      ->evaluate(atUV(0, 0)),
+                  0.1f);
+  TextureBindings none;
+  std::string e = errorOf([&] {
+    f.scalar(test::paramSet({test::texture("x", "m", FileLoc{"/scenes/a/scene.pbrt", 30, 9})}), "x",
+             0, kMatLoc, &none);
+  });
+  EXPECT_NE(e.find("scene.pbrt:30:9"), std::string::npos) << e;
+  EXPECT_NE(e.find("no float texture named 'm' in effect at this statement"), std::string::npos)
+      << e;
+}
+
+// pbrt-v2 and v3 give "inside" to the space between the dots and "outside" to the dots.
+TEST(TextureFactory, DotsUsePbrtsParameterRoles) {
+  std::vector<TextureDesc> descs = {tex(
+      "d", "float", "dots", {test::floats("inside", {0.25f}), test::floats("outside", {0.75f})})};
+  TextureFactory f(descs);
+  const Texture<Float>* d = f.scalar(test::paramSet({test::texture("x", "d")}), "x", 0, kMatLoc);
+  int inDots = 0, between = 0;
+  for (Float s = 0; s < 8; s += 0.05f)
+    for (Float t = 0; t < 8; t += 0.05f) {
+      bool dot = insidePolkaDot(s, t);
+      EXPECT_EQ(d->evaluate(atUV(s, t)), dot ? 0.75f : 0.25f) << s << " " << t;
+      (dot ? inDots : between)++;
+    }
+  EXPECT_GT(inDots, 100);
+  EXPECT_GT(between, 100);
+}
+
+// Solid textures use the CTM at the Texture statement as their world-to-texture transform, as
+// pbrt-v2 and v3 do: a Scale 2 there makes the pattern twice as fine.
+TEST(TextureFactory, SolidTexturesUseTheCtmAsWorldToTexture) {
+  std::vector<TextureDesc> descs = {
+      tex("c", "float", "checkerboard",
+          {test::ints("dimension", {3}), test::strings("aamode", {"none"})})};
+  descs[0].textureToWorld = scale(2, 2, 2);
+  TextureFactory f(descs);
+  const Texture<Float>* c = f.scalar(test::paramSet({test::texture("x", "c")}), "x", 0, kMatLoc);
+  auto at = [&](Float x) {
+    SurfaceInteraction si;
+    si.p = Point3f(x, 0.1f, 0.1f);
+    return c->evaluate(si);
+  };
+  EXPECT_EQ(at(0.3f), 1.f);  // 2x = 0.6: the tex1 cell
+  EXPECT_EQ(at(0.7f), 0.f);  // 2x = 1.4: the next cell, tex2
+  EXPECT_EQ(at(1.2f), 1.f);  // 2x = 2.4
+}
+
+// Image textures honour "string mapping"; the planar mapping projects the world-space point
+// (pbrt-v2, v3), whatever the transform at the Texture statement.
+TEST(TextureFactory, ImageTexturesHonourTheMapping) {
+  // Two texels: 0 on the left, 1 on the right.
+  TextureFactory::ImageLoader twoTexels = [](const std::string&, const std::string&) {
+    ImageBuffer img(2, 1, {"R", "G", "B"});
+    for (int c = 0; c < 3; ++c) img.at(0, 0, c) = 0, img.at(1, 0, c) = 1;
+    return img;
+  };
+  std::vector<TextureDesc> descs = {
+      tex("uv", "float", "imagemap", {filename("two.exr")}),
+      tex("planar", "float", "imagemap",
+          {filename("two.exr"), test::strings("mapping", {"planar"}),
+           test::vectors("v1", {1, 0, 0}), test::vectors("v2", {0, 1, 0}),
+           test::floats("udelta", {0.5f})}),
+  };
+  descs[1].textureToWorld = scale(2, 2, 2);
+  TextureFactory f(descs, twoTexels);
+  SurfaceInteraction si;
+  si.uv = Point2f(0.25f, 0.5f);    // the left texel's centre
+  si.p = Point3f(0.25f, 0.5f, 0);  // planar: s = 0.25 + 0.5, the right texel's centre
+  EXPECT_NEAR(f.scalar(test::paramSet({test::texture("x", "uv")}), "x", 0, kMatLoc)->evaluate(si),
+              0.f, 1e-6f);
+  EXPECT_NEAR(
+      f.scalar(test::paramSet({test::texture("x", "planar")}), "x", 0, kMatLoc)->evaluate(si), 1.f,
+      1e-6f);
+}
+
+// pbrt-v3's "bool gamma": true reads the numbers as sRGB-encoded, false as linear, whatever the
+// pixel type; an explicit "string colorspace" wins; pbrt-v2's "float gamma" stays an exponent.
+TEST(TextureFactory, ImageGammaAsPbrtV3Bool) {
+  FakeLoader fake;
+  std::vector<TextureDesc> descs = {
+      tex("on", "spectrum", "imagemap", {filename("g.exr"), test::bools("gamma", {true})}),
+      tex("off", "spectrum", "imagemap", {filename("g.png"), test::bools("gamma", {false})}),
+      tex("named", "spectrum", "imagemap",
+          {filename("g.png"), test::bools("gamma", {true}), test::strings("colorspace", {"raw"})}),
+      tex("absent", "spectrum", "imagemap", {filename("g.png")}),
+  };
+  std::vector<std::string> warnings;
+  TextureFactory f(descs, fake.loader(),
+                   [&](const FileLoc&, const std::string& m) { warnings.push_back(m); });
+  for (const char* name : {"on", "off", "named", "absent"})
+    f.spectrum(test::paramSet({test::texture("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
+  ASSERT_EQ(fake.calls.size(), 4u);
+  EXPECT_EQ(fake.calls[0].second, TextureFactory::kSrgbEncoded);
+  EXPECT_EQ(fake.calls[1].second, TextureFactory::kStoredLinear);
+  EXPECT_EQ(fake.calls[2].second, "raw");
+  EXPECT_EQ(fake.calls[3].second, "");
+  EXPECT_TRUE(warnings.empty());  // "gamma" counts as used
+}
+
+// pbrt-v3 puts (s, t) = (0, 0) at the image's lower left corner: t = 0.25 reads the bottom row.
+TEST(TextureFactory, ImageTextureTIsZeroAtTheBottomRow) {
+  TextureFactory::ImageLoader topDark = [](const std::string&, const std::string&) {
+    ImageBuffer img(1, 2, {"R", "G", "B"});
+    for (int c = 0; c < 3; ++c) img.at(0, 0, c) = 0, img.at(0, 1, c) = 1;  // row 0 is the top
+    return img;
+  };
+  std::vector<TextureDesc> descs = {tex("i", "float", "imagemap", {filename("rows.exr")})};
+  TextureFactory f(descs, topDark);
+  const Texture<Float>* t = f.scalar(test::paramSet({test::texture("x", "i")}), "x", 0, kMatLoc);
+  EXPECT_NEAR(t->evaluate(atUV(0.5f, 0.25f)), 1.f, 1e-6f);
+  EXPECT_NEAR(t->evaluate(atUV(0.5f, 0.75f)), 0.f, 1e-6f);
 }

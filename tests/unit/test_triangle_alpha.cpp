@@ -1,6 +1,7 @@
-// Triangle-mesh cut-outs ("alpha", "shadowalpha"; pbrt-v2): hits where the texture is 0 are
-// ignored by the triangle's own tests and by Embree's filter callbacks alike; shadowalpha applies
-// to occlusion queries and defaults to alpha; the factory reads both from textures.
+// Triangle-mesh cut-outs ("alpha", "shadowalpha"; pbrt-v2, v3): hits where the texture is 0 are
+// ignored by the triangle's own tests and by Embree's filter callbacks alike; occlusion queries
+// pass where alpha or shadowalpha is 0 (as pbrt-v3's IntersectP); the factory reads both from
+// textures.
 #include <gtest/gtest.h>
 
 #include "accel/embree/embree_aggregate.h"
@@ -132,15 +133,37 @@ TEST(TriangleAlpha, FactoryReadsAlphaAndShadowAlpha) {
   EXPECT_FALSE(c2.shapes[0]->intersect(down, &t, nullptr));
   EXPECT_FALSE(c2.shapes[0]->intersectP(down));
 
-  // A named texture for alpha, and shadowalpha 1: visible to no camera ray, but casts shadows.
+  // A named texture for alpha, and shadowalpha 1: shadowalpha cannot bring back what alpha cut
+  // (pbrt-v3 tests both for shadow rays), so the mesh is invisible and casts no shadow.
   ShapeDesc named = meshDesc();
   named.params.add(test::texture("alpha", "zero"));
   named.params.add(test::floats("shadowalpha", {1}));
   CreatedShapes c3 = createShapes(named, Transform(), textures);
   ASSERT_NE(c3.mesh->alpha, nullptr);
-  EXPECT_EQ(c3.mesh->shadowAlpha, nullptr);
+  EXPECT_EQ(c3.mesh->shadowAlpha, c3.mesh->alpha);
   EXPECT_FALSE(c3.shapes[0]->intersect(down, &t, nullptr));
-  EXPECT_TRUE(c3.shapes[0]->intersectP(down));
+  EXPECT_FALSE(c3.shapes[0]->intersectP(down));
+
+  // Both given: shadow rays pass where either is 0. Opaque to the camera, alpha 1 as a texture;
+  // shadowalpha 0 cuts shadows; and alpha 0 with shadowalpha 0.5 cuts both.
+  std::vector<TextureDesc> more = {zero, zero, zero};
+  more[1].textureName = "one";
+  more[1].params = test::paramSet({test::floats("value", {1})});
+  more[2].textureName = "half";
+  more[2].params = test::paramSet({test::floats("value", {0.5f})});
+  TextureFactory both(more);
+  ShapeDesc opaque = meshDesc();
+  opaque.params.add(test::texture("alpha", "one"));
+  opaque.params.add(test::texture("shadowalpha", "zero"));
+  CreatedShapes c4 = createShapes(opaque, Transform(), both);
+  EXPECT_TRUE(c4.shapes[0]->intersect(down, &t, nullptr));
+  EXPECT_FALSE(c4.shapes[0]->intersectP(down));
+  ShapeDesc cutBoth = meshDesc();
+  cutBoth.params.add(test::texture("alpha", "zero"));
+  cutBoth.params.add(test::texture("shadowalpha", "half"));
+  CreatedShapes c5 = createShapes(cutBoth, Transform(), both);
+  EXPECT_FALSE(c5.shapes[0]->intersect(down, &t, nullptr));
+  EXPECT_FALSE(c5.shapes[0]->intersectP(down));
 
   // An unknown texture name is an error at the parameter.
   ShapeDesc bad = meshDesc();
