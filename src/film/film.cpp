@@ -44,6 +44,15 @@ size_t Film::offset(const Point2i& p) const {
 }
 
 void Film::addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight) {
+  // pbrt-v3's per-sample clamp (pbrt 3e §7.9.2): the colour kept, the luminance limited.
+  if (Float y = L.y(); y > maxSampleLuminance_) {
+    accumulate(pixel, L * (maxSampleLuminance_ / y), alpha, weight);
+    return;
+  }
+  accumulate(pixel, L, alpha, weight);
+}
+
+void Film::accumulate(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight) {
   if (!pixelBounds_.inside(pixel)) return;
   Pixel& px = at(pixel);
   // Double sums: many spp of widely varying radiance still average without losing low bits.
@@ -94,7 +103,7 @@ Spectrum Film::pixelVariance(const Point2i& pixel) const {
     double s = px.w2L2Sum[c] - 2 * m * px.w2LSum[c] + m * m * px.w2Sum;
     v[c] = Float(std::max(0.0, s) / (px.weightSum * px.weightSum) * n / (n - 1));
   }
-  return v;
+  return v * (scale_ * scale_);
 }
 
 long Film::pixelSampleCount(const Point2i& pixel) const {
@@ -104,7 +113,7 @@ long Film::pixelSampleCount(const Point2i& pixel) const {
 void Film::setPixel(const Point2i& pixel, const Spectrum& L, Float alpha) {
   if (!pixelBounds_.inside(pixel)) return;
   at(pixel) = Pixel{};
-  addSample(pixel, L, alpha, 1);
+  accumulate(pixel, L, alpha, 1);
 }
 
 Spectrum Film::pixelValue(const Point2i& pixel) const {
@@ -118,11 +127,12 @@ Spectrum Film::pixelValue(const Point2i& pixel) const {
     L = Spectrum(Float(px.rgbSum[0] * inv), Float(px.rgbSum[1] * inv), Float(px.rgbSum[2] * inv));
   }
   if (splats_ && lightPaths_ > 0) L += splats_->sum(pixel) * Float(splatScale());
-  return L;
+  return L * scale_;
 }
 
 SplatBuffer& Film::enableSplats() {
-  if (!splats_) splats_ = std::make_unique<SplatBuffer>(pixelBounds_, *filter_);
+  if (!splats_)
+    splats_ = std::make_unique<SplatBuffer>(pixelBounds_, *filter_, maxSampleLuminance_);
   return *splats_;
 }
 

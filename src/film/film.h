@@ -31,6 +31,18 @@ class Film {
   const std::string& filename() const { return filename_; }
   const Bounds2f& cropWindow() const { return cropWindow_; }
 
+  // pbrt-v3's Film "scale": every pixel value (the samples' mean and the splats) is multiplied by
+  // it; the variance by its square.
+  void setScale(Float scale) { scale_ = scale; }
+  Float scale() const { return scale_; }
+  // pbrt-v3's Film "maxsampleluminance": a sample or splat whose luminance (Spectrum::y) exceeds
+  // it is scaled down to that luminance before it is added. Set before enableSplats.
+  void setMaxSampleLuminance(Float maxY) { maxSampleLuminance_ = maxY; }
+  Float maxSampleLuminance() const { return maxSampleLuminance_; }
+  // pbrt-v3's Film "diagonal" in millimetres (its realistic camera's film size; kept for one).
+  void setDiagonal(Float mm) { diagonalMm_ = mm; }
+  Float diagonal() const { return diagonalMm_; }
+
   // Extra layers to write (AovFlag bits); allocates their storage.
   void enableAovs(unsigned flags);
   unsigned aovs() const { return aovFlags_; }
@@ -49,10 +61,12 @@ class Film {
                        : 0;
   }
 
-  // weight is the filter sample's weight; alpha 1 where a surface was hit.
+  // weight is the filter sample's weight; alpha 1 where a surface was hit. L is clamped to
+  // maxSampleLuminance first.
   void addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);
   // Replaces whatever the pixel holds by one sample of weight 1: for renderers that keep their
-  // own per-pixel estimate and write it out whole (SPPM). Ignored outside the pixel bounds.
+  // own per-pixel estimate and write it out whole (SPPM; not clamped, as pbrt-v3 sets its image
+  // directly). Ignored outside the pixel bounds.
   void setPixel(const Point2i& pixel, const Spectrum& L, Float alpha);
   // Weighted mean radiance of a pixel (black if it has no samples), plus its splats.
   Spectrum pixelValue(const Point2i& pixel) const;
@@ -75,6 +89,7 @@ class Film {
     double w2Sum = 0;
     long count = 0;
   };
+  void accumulate(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);
   void writeAovs(const Point2i& p, float* out) const;
   size_t offset(const Point2i& p) const;  // p must be inside pixelBounds_
   Pixel& at(const Point2i& p) { return pixels_[offset(p)]; }
@@ -98,11 +113,13 @@ class Film {
   std::vector<AovPixel> aovPixels_;
   std::unique_ptr<SplatBuffer> splats_;
   uint64_t lightPaths_ = 0;
+  Float scale_ = 1, maxSampleLuminance_ = kInfinity, diagonalMm_ = 35;
 };
 
 // The film named by a Film statement ("image"), with pbrt-v2's parameters: xresolution 640,
 // yresolution 480, cropwindow [0 1 0 1], filename "candela.exr" (a filename given in the scene
-// is kept as written). cropOverride (the command line's) replaces the scene's cropwindow.
+// is kept as written), and pbrt-v3's: scale 1, maxsampleluminance (infinite), diagonal 35 (mm).
+// cropOverride (the command line's) replaces the scene's cropwindow.
 std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params,
                                  std::unique_ptr<Filter> filter, const FileLoc& loc,
                                  std::optional<Bounds2f> cropOverride);

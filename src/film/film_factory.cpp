@@ -19,6 +19,17 @@ int resolutionParam(const ParamSet& params, const std::string& name, int def, co
   return v;
 }
 
+// A float parameter that must be positive (infinity allowed only when allowInfinite).
+Float positiveParam(const ParamSet& params, const std::string& name, Float def, bool allowInfinite,
+                    const FileLoc& loc) {
+  Float v = params.getOneFloat(name, def);
+  if (!(v > 0) || (!allowInfinite && std::isinf(v)))
+    throw SceneError(params.locationOf(name, loc), "\"" + name + "\" must be positive" +
+                                                       (allowInfinite ? "" : " and finite") +
+                                                       ", got " + std::to_string(v));
+  return v;
+}
+
 Bounds2f cropParam(const ParamSet& params, const FileLoc& loc) {
   std::vector<Float> c = params.getFloatArray("cropwindow");
   if (c.empty()) return Bounds2f(Point2f(0, 0), Point2f(1, 1));
@@ -64,6 +75,10 @@ std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params
                               .append(" in the crop window); at most 2^27 = ")
                               .append(std::to_string(kMaxPixels)));
   auto film = std::make_unique<Film>(res, crop, std::move(filter), filename);
+  // pbrt-v3's film parameters (pbrt 3e §7.9).
+  film->setScale(positiveParam(params, "scale", 1, false, loc));
+  film->setMaxSampleLuminance(positiveParam(params, "maxsampleluminance", kInfinity, true, loc));
+  film->setDiagonal(positiveParam(params, "diagonal", 35, false, loc));
   if (film->pixelBounds().empty())
     throw SceneError(cropLoc, "crop window [" + std::to_string(crop.pMin.x) + " " +
                                   std::to_string(crop.pMax.x) + " " + std::to_string(crop.pMin.y) +

@@ -10,19 +10,24 @@ constexpr double kLoScale = 4294967296.0;  // lo counts units of 2^-36 (2^32 per
 constexpr double kMaxHi = 9.0e18 / 2;      // |hi| of one splat, well inside int64
 }  // namespace
 
-SplatBuffer::SplatBuffer(const Bounds2i& pixelBounds, const Filter& filter)
-    : bounds_(pixelBounds), filter_(filter), filterIntegral_(filter.integral()) {
+SplatBuffer::SplatBuffer(const Bounds2i& pixelBounds, const Filter& filter, Float maxLuminance)
+    : bounds_(pixelBounds),
+      filter_(filter),
+      filterIntegral_(filter.integral()),
+      maxLuminance_(maxLuminance) {
   size_t n = size_t(std::max(0, bounds_.area())) * 6;
   words_ = std::make_unique<std::atomic<int64_t>[]>(n);
   for (size_t i = 0; i < n; ++i) words_[i].store(0, std::memory_order_relaxed);
 }
 
-void SplatBuffer::add(const Point2f& pRaster, const Spectrum& v) {
-  if (v.isBlack()) return;
-  if (!v.isFinite()) {
+void SplatBuffer::add(const Point2f& pRaster, const Spectrum& splat) {
+  if (splat.isBlack()) return;
+  if (!splat.isFinite()) {
     refused_.fetch_add(1, std::memory_order_relaxed);
     return;
   }
+  Spectrum v = splat;
+  if (Float y = v.y(); y > maxLuminance_) v *= maxLuminance_ / y;
   // Pixel (x, y) has its centre c at (x + 0.5, y + 0.5); the ones with pRaster - c in [-r, r),
   // half-open so that a splat on the border of a box filter's support counts once, in the pixel
   // [x, x + 1) that holds it, as camera samples do.

@@ -25,8 +25,9 @@ namespace candela {
 
 class SplatBuffer {
  public:
-  // Splats outside pixelBounds are dropped (a crop window keeps only its own pixels).
-  SplatBuffer(const Bounds2i& pixelBounds, const Filter& filter);
+  // Splats outside pixelBounds are dropped (a crop window keeps only its own pixels). A splat whose
+  // luminance exceeds maxLuminance is scaled down to it first (pbrt-v3's film clamp).
+  SplatBuffer(const Bounds2i& pixelBounds, const Filter& filter, Float maxLuminance = kInfinity);
   // Adds v to every pixel whose filter support holds pRaster, weighted f(pRaster - centre) / ∫f
   // (the same measurement the pixel's own filter-importance-sampled samples make). Thread-safe.
   void add(const Point2f& pRaster, const Spectrum& v);
@@ -41,6 +42,7 @@ class SplatBuffer {
   Bounds2i bounds_;
   const Filter& filter_;
   Float filterIntegral_;
+  Float maxLuminance_;
   // Per pixel and channel, the hi and lo words (6 atomics a pixel).
   std::unique_ptr<std::atomic<int64_t>[]> words_;
   std::atomic<uint64_t> refused_{0};

@@ -25,7 +25,7 @@ Spectrum ProjectionLight::projection(const Vector3f& wWorld) const {
   if (x < -screenX_ || x > screenX_ || y < -screenY_ || y > screenY_) return Spectrum(0);
   if (!image_) return Spectrum(1);
   Float s = (x + screenX_) / (2 * screenX_);
-  Float t = (screenY_ - y) / (2 * screenY_);  // top row (t = 0) toward +y
+  Float t = (y + screenY_) / (2 * screenY_);  // top row (t = 0) toward -y, as pbrt-v2/v3
   return image_->lookupTrilinear(Point2f(s, t), 0);
 }
 

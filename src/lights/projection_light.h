@@ -7,8 +7,10 @@
 // (-wi), not the direction toward it, and the image aspect ratio is a floating-point division
 // (the draft's integer division makes every landscape image square-ish and portraits aspect 0).
 // The window is [-a, a] x [-1, 1] for aspect a > 1 and [-1, 1] x [-1/a, 1/a] otherwise, with the
-// fov spanning the shorter side, as pbrt's perspective camera. The image's top row is projected
-// toward +y, so that a camera at the projector sees the slide upright (pbrt-v2 flips it).
+// fov spanning the shorter side, as pbrt's perspective camera. As in pbrt-v2 and v3 (pbrt 3e
+// §12.3.2: the image coordinates are the window position's offset from its lower corner), the
+// image's top row is projected toward light-space -y: a camera at the projector with +y up sees
+// the slide upside down, and scenes written for pbrt expect that.
 #pragma once
 
 #include <memory>

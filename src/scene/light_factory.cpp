@@ -23,6 +23,9 @@ int readSampleCount(const ParamSet& p, const FileLoc& loc) {
 }
 
 // The "mapname" image, read relative to the scene file that named it; nullopt when none is named.
+// Its numbers are taken as they are (scene_linear), 8-bit files included, as pbrt-v2 and v3 read
+// light images: pbrt-v3 decodes sRGB 8-bit files only in its image texture (pbrt 3e §10.4), so a
+// PNG diagram, slide or environment is not darkened.
 std::optional<ImageBuffer> readMap(const LightDesc& desc, const TextureFactory::ImageLoader& load) {
   std::string name = desc.params.getOneString("mapname", "");
   if (name.empty()) return std::nullopt;
@@ -36,7 +39,7 @@ std::optional<ImageBuffer> readMap(const LightDesc& desc, const TextureFactory::
     throw SceneError(loc, "cannot read light map '" + where + "': no image reader was given");
   ImageBuffer image;
   try {
-    image = load(where, "");
+    image = load(where, "scene_linear");
   } catch (const std::exception& e) {
     throw SceneError(loc, "cannot read light map '" + where + "': " + e.what());
   }

@@ -231,6 +231,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
                        options.aovs);
   job.exrCompression = filmParams.getOneString("compression", "zip");
   job.exrHalf = filmParams.getOneBool("half", false);
+  reportUnused(PluginDesc{filmDesc.name, filmParams, filmDesc.loc}, warn);
   reportUnused(filterDesc, warn);
   CameraDesc camDesc = desc.camera;
   if (camDesc.name.empty()) camDesc.name = "perspective";

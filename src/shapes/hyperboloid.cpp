@@ -2,144 +2,135 @@
 
 namespace candela {
 
+namespace {
+
+HyperboloidFit fitOf(const Point3f& p1, const Point3f& p2) {
+  double a[3] = {p1.x, p1.y, p1.z}, b[3] = {p2.x, p2.y, p2.z};
+  return fitHyperboloid(a, b);
+}
+
+}  // namespace
+
 HyperboloidShape::HyperboloidShape(const Transform& objectToWorld, bool reverseOrientation,
                                    const Point3f& p1, const Point3f& p2, Float phiMaxDeg)
-    : Quadric(objectToWorld, reverseOrientation), phiMax_(phiMaxRadians(phiMaxDeg)) {
-  for (int i = 0; i < 3; ++i) {
-    p1_[i] = p1[i];
-    delta_[i] = double(p2[i]) - p1[i];
-  }
+    : Quadric(objectToWorld, reverseOrientation),
+      fit_(fitOf(p1, p2)),
+      profile_(fit_.degenerate ? 0 : fit_.k, fit_.degenerate ? 0 : fit_.d, std::min(p1.z, p2.z),
+               std::max(p1.z, p2.z)),
+      zMin_(std::min(p1.z, p2.z)),
+      zMax_(std::max(p1.z, p2.z)),
+      phiMax_(phiMaxRadians(phiMaxDeg)) {
+  const double* a = fit_.p1;
+  for (int i = 0; i < 3; ++i) delta_[i] = fit_.p2[i] - a[i];
   double dz = delta_[2];
   invDz_ = dz != 0 ? 1 / dz : 0;
   alpha_ = delta_[0] * delta_[0] + delta_[1] * delta_[1];
-  beta_ = 2 * (p1_[0] * delta_[0] + p1_[1] * delta_[1]);
-  gamma_ = p1_[0] * p1_[0] + p1_[1] * p1_[1];
-  rMax_ = std::max(std::hypot(p1_[0], p1_[1]), std::hypot(double(p2.x), double(p2.y)));
-  zMin_ = std::min(p1.z, p2.z);
-  zMax_ = std::max(p1.z, p2.z);
-  // |dp/du x dp/dv|^2 / phiMax^2 = dz^2 R(v) + R'(v)^2 / 4 =: Q(v), a quadratic; written as
-  // qa (v + qb)^2 + qd with qd = dz^2 (x1 dy - y1 dx)^2 / alpha (Lagrange's identity), which
-  // needs no cancelling subtraction.
-  qa_ = alpha_ * (dz * dz + alpha_);
-  if (qa_ > 0) {
-    qb_ = beta_ / (2 * alpha_);
-    double cr = p1_[0] * delta_[1] - p1_[1] * delta_[0];
-    qd_ = dz * dz * cr * cr / alpha_;
-  } else {
-    qb_ = 0;
-    qd_ = dz * dz * gamma_;  // a cylinder: Q is constant
-  }
-  // dp/du x dp/dv has the radial component phiMax rho dz.
+  beta_ = 2 * (a[0] * delta_[0] + a[1] * delta_[1]);
+  gamma_ = a[0] * a[0] + a[1] * a[1];
+  cross_ = a[0] * delta_[1] - a[1] * delta_[0];
+  rMax_ = std::sqrt(profile_.maxRadiusSquared());
+  // dp/du x dp/dv has the radial component phiMax rho dz (see geometryAt).
   crossPointsInward_ = dz < 0;
-  objectArea_ = dz != 0 ? phiMax_ * stripIntegral(1) : 0;
-}
-
-double HyperboloidShape::stripIntegral(double v) const {
-  if (qa_ == 0) return std::sqrt(qd_) * v;
-  // The antiderivative of sqrt(qa w^2 + qd): (w sqrt(qa w^2 + qd) + qd / sqrt(qa)
-  // asinh(w sqrt(qa / qd))) / 2; the second term vanishes with qd (the segment meets the axis).
-  auto G = [&](double w) {
-    double s = std::sqrt(qa_ * w * w + qd_);
-    double g = w * s;
-    if (qd_ > 0) g += qd_ / std::sqrt(qa_) * std::asinh(w * std::sqrt(qa_ / qd_));
-    return 0.5 * g;
-  };
-  return G(v + qb_) - G(qb_);
+  objectArea_ = dz != 0 ? phiMax_ * profile_.areaPerRadian() : 0;
 }
 
 Bounds3f HyperboloidShape::objectBound() const {
-  // The distance from the axis is convex along the segment: largest at an end.
   Float r = Float(rMax_);
+  if (double(r) < rMax_) r = nextFloatUp(r);
   return Bounds3f(Point3f(-r, -r, Float(zMin_)), Point3f(r, r, Float(zMax_)));
 }
 
 void HyperboloidShape::lineCoefficients(const double o[3], const double d[3], double* a, double* b,
                                         double* c) const {
-  // x^2 + y^2 - R(v) with v = v0 + t v1 along the line.
-  double v0 = (o[2] - p1_[2]) * invDz_, v1 = d[2] * invDz_;
-  *a = d[0] * d[0] + d[1] * d[1] - alpha_ * v1 * v1;
-  *b = 2 * (d[0] * o[0] + d[1] * o[1]) - (2 * alpha_ * v0 + beta_) * v1;
-  *c = o[0] * o[0] + o[1] * o[1] - ((alpha_ * v0 + beta_) * v0 + gamma_);
+  // F = x^2 + y^2 - k z^2 - d along the line.
+  double k = fit_.k;
+  *a = d[0] * d[0] + d[1] * d[1] - k * d[2] * d[2];
+  *b = 2 * (d[0] * o[0] + d[1] * o[1] - k * d[2] * o[2]);
+  *c = o[0] * o[0] + o[1] * o[1] - k * o[2] * o[2] - fit_.d;
 }
 
 double HyperboloidShape::implicit(const double p[3], double* fErr, double grad[3]) const {
-  double v = (p[2] - p1_[2]) * invDz_;
-  double x2 = p[0] * p[0] + p[1] * p[1];
-  double R = (alpha_ * v + beta_) * v + gamma_;
-  *fErr = 10 * std::numeric_limits<double>::epsilon() *
-          (x2 + alpha_ * v * v + std::abs(beta_ * v) + gamma_);
+  double x2 = p[0] * p[0] + p[1] * p[1], kz2 = fit_.k * p[2] * p[2];
+  *fErr = 10 * std::numeric_limits<double>::epsilon() * (x2 + std::abs(kz2) + std::abs(fit_.d));
   grad[0] = 2 * p[0];
   grad[1] = 2 * p[1];
-  grad[2] = -(2 * alpha_ * v + beta_) * invDz_;
-  return x2 - R;
+  grad[2] = -2 * fit_.k * p[2];
+  return x2 - kz2 - fit_.d;
+}
+
+void HyperboloidShape::segmentPoint(double v, double* x, double* y) const {
+  *x = fit_.p1[0] + v * delta_[0];
+  *y = fit_.p1[1] + v * delta_[1];
 }
 
 double HyperboloidShape::sweepAngle(const double p[3], double v) const {
-  double rx = p1_[0] + v * delta_[0], ry = p1_[1] + v * delta_[1];
-  // The angle from (rx, ry) to (x, y); 0 where the segment meets the axis (an apex).
+  double rx, ry;
+  segmentPoint(v, &rx, &ry);
+  // 0 where the segment meets the axis.
   return azimuth(rx * p[0] + ry * p[1], rx * p[1] - ry * p[0]);
 }
 
 bool HyperboloidShape::clip(double p[3]) const {
-  double v = (p[2] - p1_[2]) * invDz_;
-  if (!(v >= 0 && v <= 1)) return false;
+  if (!(p[2] >= zMin_ && p[2] <= zMax_)) return false;
+  double v = (p[2] - fit_.p1[2]) * invDz_;
   return phiMax_ >= 2 * std::numbers::pi || sweepAngle(p, v) <= phiMax_;
 }
 
 Quadric::LocalGeometry HyperboloidShape::geometryAt(const double p[3]) const {
-  double v = (p[2] - p1_[2]) * invDz_;
+  double z = p[2], v = (z - fit_.p1[2]) * invDz_;
   double phi = sweepAngle(p, v);
-  double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
   LocalGeometry g;
   g.uv = Point2f(Float(phi / phiMax_), Float(v));
-  // dp/dv is the segment's direction turned by phi; dp/du = phiMax (-y, x, 0), taken a little
-  // off the axis where the segment meets it (an apex, seed notes §23).
-  double dx = delta_[0] * cosPhi - delta_[1] * sinPhi, dy = delta_[0] * sinPhi + delta_[1] * cosPhi;
-  double xg = p[0], yg = p[1], rho = std::hypot(xg, yg), rhoMin = kAxisNudge * rMax_;
-  if (rho < rhoMin) {
-    // Along the point's own direction, or (exactly on the axis) the side v grows to.
-    double ux = rho > 0 ? xg / rho : dx, uy = rho > 0 ? yg / rho : dy;
-    double len = std::hypot(ux, uy);
-    if (len > 0) {
-      xg = rhoMin * ux / len;
-      yg = rhoMin * uy / len;
-    } else {
-      xg = rhoMin;
-      yg = 0;
-    }
+  // The radial direction; taken a little off the axis where the surface meets it (a cone's apex,
+  // an ellipsoid's or two-sheet hyperboloid's pole; seed notes §23).
+  double rho = std::hypot(p[0], p[1]), rhoMin = kAxisNudge * rMax_;
+  double cx, cy;
+  if (rho > 0) {
+    cx = p[0] / rho;
+    cy = p[1] / rho;
+  } else {
+    double rx, ry;
+    segmentPoint(v, &rx, &ry);
+    double len = std::hypot(rx, ry);
+    double c = std::cos(phi), s = std::sin(phi);
+    cx = len > 0 ? (rx * c - ry * s) / len : 1;
+    cy = len > 0 ? (rx * s + ry * c) / len : 0;
   }
+  double r = std::max(rho, rhoMin);
+  if (!(r > 0)) r = 1e-30;
+  double xg = r * cx, yg = r * cy;
+  // p(u, v) = rho(z) (cos theta, sin theta, 0) + z e_z with z = z1 + v dz and
+  // theta = theta_seg(v) + u phiMax: dp/dv = dz rho' e_r + rho w e_theta + dz e_z, where
+  // rho' = k z / rho and w = dtheta_seg/dv = cross / R(v).
+  double dz = delta_[2], k = fit_.k;
+  double rhoP = k * z / r;
+  double R = (alpha_ * v + beta_) * v + gamma_;
+  double w = R > 0 ? cross_ / R : 0;
+  double wP = R > 0 ? -cross_ * (2 * alpha_ * v + beta_) / (R * R) : 0;
+  double radial = dz * rhoP, tangential = r * w;
+  double dvx = radial * cx - tangential * cy, dvy = radial * cy + tangential * cx;
   g.dpdu = Vector3f(Float(-phiMax_ * yg), Float(phiMax_ * xg), 0);
-  g.dpdv = Vector3f(Float(dx), Float(dy), Float(delta_[2]));
+  g.dpdv = Vector3f(Float(dvx), Float(dvy), Float(dz));
   g.d2Pduu = Vector3f(Float(-phiMax_ * phiMax_ * xg), Float(-phiMax_ * phiMax_ * yg), 0);
-  g.d2Pduv = Vector3f(Float(-phiMax_ * dy), Float(phiMax_ * dx), 0);
-  return g;  // d2p/dv2 = 0: the rulings are straight
+  g.d2Pduv = Vector3f(Float(-phiMax_ * dvy), Float(phiMax_ * dvx), 0);
+  // d2p/dv2 = (dz^2 rho'' - rho w^2) e_r + (2 dz rho' w + rho w') e_theta, rho'' = (k -
+  // rho'^2)/rho.
+  double rhoPP = (k - rhoP * rhoP) / r;
+  double vr = dz * dz * rhoPP - r * w * w, vt = 2 * dz * rhoP * w + r * wP;
+  g.d2Pdvv = Vector3f(Float(vr * cx - vt * cy), Float(vr * cy + vt * cx), 0);
+  return g;
 }
 
 void HyperboloidShape::sampleObject(const Point2f& u, double p[3]) const {
-  // v with density sqrt(Q(v)) / stripIntegral(1): solve stripIntegral(v) = u stripIntegral(1).
-  // The function is increasing with derivative sqrt(Q(v)); Newton steps that would leave the
-  // bracket, or a zero derivative (an apex), fall back to bisection.
-  double total = stripIntegral(1), target = double(u.x) * total;
-  double v = u.x, lo = 0, hi = 1;
-  if (qa_ > 0 && total > 0) {
-    for (int i = 0; i < 60; ++i) {
-      double h = stripIntegral(v) - target;
-      if (h > 0)
-        hi = v;
-      else
-        lo = v;
-      double w = v + qb_, deriv = std::sqrt(qa_ * w * w + qd_);
-      double next = deriv > 0 ? v - h / deriv : 0.5 * (lo + hi);
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::abs(next - v) <= 1e-15) break;
-      v = next;
-    }
-  }
-  double phi = u.y * phiMax_, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
-  double rx = p1_[0] + v * delta_[0], ry = p1_[1] + v * delta_[1];
-  p[0] = rx * cosPhi - ry * sinPhi;
-  p[1] = rx * sinPhi + ry * cosPhi;
-  p[2] = p1_[2] + v * delta_[2];
+  double z = profile_.heightAtAreaFraction(u.x);
+  double v = (z - fit_.p1[2]) * invDz_;
+  double rx, ry;
+  segmentPoint(v, &rx, &ry);
+  double theta = azimuth(rx, ry) + double(u.y) * phiMax_;
+  double rho = std::sqrt(std::max(0.0, profile_.radiusSquared(z)));
+  p[0] = rho * std::cos(theta);
+  p[1] = rho * std::sin(theta);
+  p[2] = z;
 }
 
 std::unique_ptr<Shape> createHyperboloidShape(const Transform& objectToWorld,

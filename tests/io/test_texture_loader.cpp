@@ -1,6 +1,7 @@
 // Image texture files through OpenImageIO and OpenColorIO: the default colour-space rule (8-bit
 // files are sRGB-encoded, float files linear), overrides by name or alias, errors naming the
-// path, and an image texture made by the TextureFactory with this loader.
+// path, and an image texture made by the TextureFactory with this loader; light maps, which
+// pbrt-v2/v3 read undecoded, 8-bit files included.
 #include "film/output/texture_loader.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,9 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "lights/goniometric_light.h"
+#include "lights/projection_light.h"
+#include "scene/plugin_factories.h"
 #include "scene/texture_factory.h"
 #include "support/param_items.h"
 
@@ -175,6 +179,28 @@ TEST(TextureLoader, ImageTextureThroughTheFactory) {
   SurfaceInteraction si;
   si.uv = Point2f(0.4f, 0.6f);
   EXPECT_NEAR(t->evaluate(si)[1], srgbToLinear(128.0 / 255.0), 2e-4);
+}
+
+TEST(LightMaps, EightBitFilesAreReadUndecodedAsPbrtDoes) {
+  // pbrt-v3's goniometric and projection lights (and v2's) take an 8-bit image's codes / 255 as
+  // they are: code 128 is 0.502, where an image texture decodes it to 0.216.
+  TempDir dir;
+  ColorManagement cm;
+  std::string png = write128Png(dir, cm);
+  auto load = [&cm](const std::string& path, const std::string& colorSpace) {
+    return loadTextureImage(path, colorSpace, cm);
+  };
+  for (const char* kind : {"goniometric", "projection"}) {
+    LightDesc desc;
+    desc.name = kind;
+    desc.params.add(test::strings("mapname", {png}));
+    desc.params.add(test::floats("fov", {60}));
+    std::unique_ptr<Light> light = createLight(desc, load);
+    Spectrum v = desc.name == "goniometric"
+                     ? static_cast<const GoniometricLight&>(*light).scale(Vector3f(0, 1, 0))
+                     : static_cast<const ProjectionLight&>(*light).projection(Vector3f(0, 0, 1));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(v[c], 128.0 / 255, 2e-3) << kind;
+  }
 }
 
 }  // namespace

@@ -57,5 +57,29 @@ WorldEnd
   EXPECT_EQ(warnings[0], "--spp: lowdiscrepancy sampler: --spp 6 rounded up to the power of two 8");
 }
 
+TEST(BuildWarnings, FilmParametersAreCheckedLikeEveryStatement) {
+  // pbrt-v3's film parameters are read; a misspelt one is reported at its location (before, no
+  // Film parameter was ever reported). --quick's own resolution does not count as unused.
+  const char* scene = R"(Film "image" "integer xresolution" [8] "integer yresolution" [8]
+  "float scale" [1.5] "float maxsampleluminance" [10] "float diagonal" [35]
+  "integer xresolutoin" [16]
+WorldBegin
+WorldEnd
+)";
+  for (bool quick : {false, true}) {
+    std::vector<std::string> warnings;
+    BuildOptions options;
+    options.quick = quick;
+    options.warn = [&](const FileLoc& loc, const std::string& message) {
+      warnings.push_back(loc.str() + ": " + message);
+    };
+    test::RenderedScene r = test::buildSceneText(scene, options);
+    EXPECT_EQ(r.film().scale(), 1.5f);
+    ASSERT_EQ(warnings.size(), 1u) << quick;
+    EXPECT_NE(warnings[0].find("test.pbrt:3:"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("xresolutoin"), std::string::npos) << warnings[0];
+  }
+}
+
 }  // namespace
 }  // namespace candela

@@ -169,8 +169,29 @@ inline QuadricModel paraboloidModel(double r, double zMin, double zMax, double p
   return m;
 }
 
+// pbrt 2e/3e §3.5.3: rho^2 = d + k z^2 (a (x^2 + y^2) - c z^2 = 1, d = 1 / a, k = c / a) solved
+// through p2 and q = 2 p2 - p1 by Cramer's rule; a line through the origin (no solution) sweeps
+// the cone rho^2 = (rho2^2 / z2^2) z^2. v is linear in z; u is the angle from the segment's point
+// at that height.
+inline void hyperboloidModelFit(const D3& p1, const D3& p2, double* k, double* d) {
+  D3 q = {2 * p2[0] - p1[0], 2 * p2[1] - p1[1], 2 * p2[2] - p1[2]};
+  double s1 = q[0] * q[0] + q[1] * q[1], t1 = q[2] * q[2];
+  double s2 = p2[0] * p2[0] + p2[1] * p2[1], t2 = p2[2] * p2[2];
+  // Rows (s, -t) (a, c) = 1.
+  double det = -s1 * t2 + s2 * t1;
+  if (std::abs(det) <= 1e-12 * (s1 * t2 + s2 * t1)) {
+    *k = s2 / t2;
+    *d = 0;
+    return;
+  }
+  double a = (-t2 + t1) / det, c = (s1 - s2) / det;
+  *k = c / a;
+  *d = 1 / a;
+}
+
 inline QuadricModel hyperboloidModel(const D3& p1, const D3& p2, double phiMaxDeg) {
-  double phiMax = toRad(phiMaxDeg);
+  double phiMax = toRad(phiMaxDeg), k, d;
+  hyperboloidModelFit(p1, p2, &k, &d);
   QuadricModel m;
   m.name = "hyperboloid";
   m.size = std::max({std::hypot(p1[0], p1[1]), std::hypot(p2[0], p2[1]), std::abs(p2[2] - p1[2])});
@@ -180,9 +201,10 @@ inline QuadricModel hyperboloidModel(const D3& p1, const D3& p2, double phiMaxDe
         Point3f(Float(p2[0]), Float(p2[1]), Float(p2[2])), Float(phiMaxDeg));
   };
   m.P = [=](double u, double v) {
-    double phi = u * phiMax, c = std::cos(phi), s = std::sin(phi);
     double x = p1[0] + v * (p2[0] - p1[0]), y = p1[1] + v * (p2[1] - p1[1]);
-    return D3{x * c - y * s, x * s + y * c, p1[2] + v * (p2[2] - p1[2])};
+    double z = p1[2] + v * (p2[2] - p1[2]);
+    double theta = std::atan2(y, x) + u * phiMax, rho = std::sqrt(std::max(0.0, d + k * z * z));
+    return D3{rho * std::cos(theta), rho * std::sin(theta), z};
   };
   m.uvOf = [=](const D3& p) {
     double v = (p[2] - p1[2]) / (p2[2] - p1[2]);
@@ -194,9 +216,11 @@ inline QuadricModel hyperboloidModel(const D3& p1, const D3& p2, double phiMaxDe
 
 // Partial shapes of every kind, including the singular ones (apex, centre, pole) and the
 // orientations whose parameterisation points inward (negative cone height, hyperboloid with p2
-// below p1). No full sphere: its solid-angle sampling covers the visible cone, not the area.
+// below p1), and hyperboloid fits of each kind (one sheet, ellipsoid, cone through the origin). No
+// full sphere: its solid-angle sampling covers the visible cone, not the area.
 inline std::vector<QuadricModel> allModels() {
-  QuadricModel throughAxis = hyperboloidModel({1, 0, 0}, {-0.5, 0, 1}, 360);
+  // A segment through the origin: the cone it sweeps, apex at v = 2/3.
+  QuadricModel throughAxis = hyperboloidModel({0.9, 0.3, -0.6}, {-0.45, -0.15, 0.3}, 360);
   throughAxis.apexV = 2.0 / 3;
   return {sphereModel(1.2, -0.7, 0.9, 260),
           sphereModel(0.9, -0.9, 0.4, 360),
@@ -210,6 +234,7 @@ inline std::vector<QuadricModel> allModels() {
           paraboloidModel(1, 0, 1, 360),
           hyperboloidModel({1, 0.3, -0.8}, {-0.2, 1.1, 0.9}, 280),
           hyperboloidModel({0.4, 0.9, 0.7}, {1, 0, -0.6}, 360),
+          hyperboloidModel({1.2, 0.2, -0.2}, {0.9, 0.3, 0.3}, 310),  // part of an ellipsoid
           throughAxis};
 }
 

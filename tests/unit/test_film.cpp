@@ -1,5 +1,6 @@
 // The film: crop-window pixel bounds (the lrt draft's ceil rule), crops tiling the image exactly,
-// weighted accumulation, the RGBA image it hands to the writers, and the factory.
+// weighted accumulation, the RGBA image it hands to the writers, pbrt-v3's scale and per-sample
+// luminance clamp, and the factory.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -132,6 +133,82 @@ TEST(FilmFactory, Errors) {
   ParamSet res;
   res.add(test::ints("xresolution", {0}));
   EXPECT_THROW(createFilm("image", res, box(), loc, std::nullopt), SceneError);
+}
+
+TEST(Film, ScaleMultipliesEveryPixelValue) {
+  // pbrt-v3's "scale" multiplies the written image: the samples' mean, the splats and (squared)
+  // the variance.
+  auto make = [](Float scale) {
+    auto f = std::make_unique<Film>(Point2i(2, 1), crop(0, 1, 0, 1), box(), "s.exr");
+    f->setScale(scale);
+    f->addSample(Point2i(0, 0), Spectrum(1, 2, 3), 1, 1);
+    f->addSample(Point2i(0, 0), Spectrum(3, 2, 1), 1, 1);
+    f->enableSplats().add(Point2f(1.5f, 0.5f), Spectrum(0.25f));
+    f->addLightPaths(2);
+    return f;
+  };
+  auto plain = make(1), scaled = make(1.5f);
+  for (int x = 0; x < 2; ++x)
+    for (int c = 0; c < 3; ++c) {
+      Point2i p(x, 0);
+      EXPECT_FLOAT_EQ(scaled->pixelValue(p)[c], 1.5f * plain->pixelValue(p)[c]) << x << c;
+      EXPECT_FLOAT_EQ(scaled->image().at(x, 0, c), 1.5f * plain->image().at(x, 0, c));
+      EXPECT_FLOAT_EQ(scaled->pixelVariance(p)[c], 2.25f * plain->pixelVariance(p)[c]);
+    }
+  EXPECT_GT(plain->pixelValue(Point2i(1, 0))[0], 0);  // the splat arrived
+  EXPECT_GT(plain->pixelVariance(Point2i(0, 0))[0], 0);
+}
+
+TEST(Film, MaxSampleLuminanceClampsEachSampleKeepingItsColour) {
+  Film f(Point2i(2, 2), crop(0, 1, 0, 1), box(), "c.exr");
+  f.setMaxSampleLuminance(1);
+  // Y = 7.1516 > 1: scaled by 1 / 7.1516, so its Y becomes 1; Y = 0.425 is kept.
+  f.addSample(Point2i(0, 0), Spectrum(0, 10, 0), 1, 1);
+  f.addSample(Point2i(0, 0), Spectrum(2, 0, 0), 1, 1);
+  Spectrum v = f.pixelValue(Point2i(0, 0));
+  EXPECT_FLOAT_EQ(v[0], 1.f);
+  EXPECT_NEAR(v[1], 0.5 / 0.715160, 1e-6);
+  EXPECT_EQ(v[2], 0.f);
+  // Splats are clamped too (before the filter spreads them); a pixel set whole (SPPM) is not.
+  SplatBuffer& splats = f.enableSplats();
+  splats.add(Point2f(1.5f, 0.5f), Spectrum(20));
+  EXPECT_NEAR(splats.sum(Point2i(1, 0)).y(), 1, 1e-5);
+  f.setPixel(Point2i(0, 1), Spectrum(5), 1);
+  EXPECT_FLOAT_EQ(f.pixelValue(Point2i(0, 1))[1], 5.f);
+}
+
+TEST(FilmFactory, PbrtV3Parameters) {
+  FileLoc loc{"f.pbrt", 1, 1};
+  auto f = createFilm("image", ParamSet(), box(), loc, std::nullopt);
+  EXPECT_EQ(f->scale(), 1);
+  EXPECT_EQ(f->maxSampleLuminance(), kInfinity);
+  EXPECT_EQ(f->diagonal(), 35);
+  ParamSet ps =
+      test::paramSet({test::floats("scale", {1.5f}), test::floats("maxsampleluminance", {10}),
+                      test::floats("diagonal", {43.3f})});
+  f = createFilm("image", ps, box(), loc, std::nullopt);
+  EXPECT_EQ(f->scale(), 1.5f);
+  EXPECT_EQ(f->maxSampleLuminance(), 10);
+  EXPECT_EQ(f->diagonal(), 43.3f);
+  int unused = 0;
+  ps.forEachUnused([&](const ParamItem&) { ++unused; });
+  EXPECT_EQ(unused, 0);
+  // Each must be positive (and finite, but for the clamp): an error at the parameter.
+  for (const char* name : {"scale", "maxsampleluminance", "diagonal"})
+    for (Float bad : {Float(0), Float(-1), std::numeric_limits<Float>::quiet_NaN()}) {
+      ParamSet b;
+      b.add(test::floats(name, {bad}, FileLoc{"film.pbrt", 9, 3}));
+      try {
+        createFilm("image", b, box(), loc, std::nullopt);
+        ADD_FAILURE() << name << " " << bad;
+      } catch (const SceneError& e) {
+        EXPECT_EQ(e.location().line, 9) << e.what();
+        EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+      }
+    }
+  ParamSet infiniteScale;
+  infiniteScale.add(test::floats("scale", {kInfinity}));
+  EXPECT_THROW(createFilm("image", infiniteScale, box(), loc, std::nullopt), SceneError);
 }
 
 }  // namespace

@@ -137,14 +137,19 @@ TEST(ProjectionLight, WindowAspectAndDirection) {
   EXPECT_EQ(deltaLi(portrait, Point3f(1.1f * t, 0, 1), &wi)[0], 0.f);
 }
 
-TEST(ProjectionLight, ImageTopRowTowardPlusYAndPowerIsTheIntegral) {
-  // 1 x 2 image, top texel 1 and bottom 0: light leaving toward +y is lit, toward -y dark.
+TEST(ProjectionLight, ImageTopRowTowardMinusYAndPowerIsTheIntegral) {
+  // 2 x 2 image, top row 1 and bottom 0, left column red: as in pbrt-v2/v3 the top row leaves
+  // toward light-space -y (the slide upside down for a camera at the projector with +y up), and
+  // the left column toward -x.
   auto image = std::make_shared<MIPMap<Spectrum>>(
-      1, 2, std::vector<Spectrum>{Spectrum(1), Spectrum(0)}, WrapMode::Clamp);
+      2, 2, std::vector<Spectrum>{Spectrum(1, 0, 0), Spectrum(0, 0, 1), Spectrum(0), Spectrum(0)},
+      WrapMode::Clamp);
   ProjectionLight light(Transform(), Spectrum(1), 45, image, 1);
   Float t = std::tan(radians(22.5f));
-  EXPECT_GT(light.projection(Vector3f(0, 0.9f * t, 1))[0], 0.9f);
-  EXPECT_LT(light.projection(Vector3f(0, -0.9f * t, 1))[0], 0.1f);
+  EXPECT_GT(light.projection(Vector3f(-0.9f * t, -0.9f * t, 1))[0], 0.9f);
+  EXPECT_LT(light.projection(Vector3f(-0.9f * t, -0.9f * t, 1))[2], 0.1f);
+  EXPECT_GT(light.projection(Vector3f(0.9f * t, -0.9f * t, 1))[2], 0.9f);
+  EXPECT_LT(light.projection(Vector3f(0, 0.9f * t, 1)).maxComponent(), 0.1f);
   ProjectionLight plain(rotateZ(20), Spectrum(3), 50, nullptr, 1.5f);
   double integral =
       3 *
