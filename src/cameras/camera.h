@@ -58,16 +58,18 @@ class CameraImportance {
 };
 
 // The camera named by a Camera statement ("perspective", "orthographic" or "environment"), with
-// pbrt-v2's parameters and defaults; cameraToWorld is the inverse of the CTM at the statement at
-// the two transform times, fullResolution the film's. A moving camera takes each ray to world
-// space by the transform at the ray's time (pbrt 2e §6.1). An unknown name or a bad value is a
-// SceneError at loc.
+// pbrt-v2's parameters and defaults, or pbrt-v3's "realistic"; cameraToWorld is the inverse of
+// the CTM at the statement at the two transform times, fullResolution the film's, filmDiagonal
+// the film's "diagonal" in millimetres (only the realistic camera uses it; pbrt-v3's default 35).
+// A moving camera takes each ray to world space by the transform at the ray's time (pbrt 2e
+// §6.1). An unknown name or a bad value is a SceneError at loc (or at the parameter).
 std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
                                      const AnimatedTransform& cameraToWorld,
-                                     const Point2i& fullResolution, const FileLoc& loc);
+                                     const Point2i& fullResolution, const FileLoc& loc,
+                                     Float filmDiagonal = 35);
 // A camera that stands still.
 std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
                                      const Transform& cameraToWorld, const Point2i& fullResolution,
-                                     const FileLoc& loc);
+                                     const FileLoc& loc, Float filmDiagonal = 35);
 
 }  // namespace candela

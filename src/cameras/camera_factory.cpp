@@ -1,10 +1,14 @@
-// Camera "name" -> Camera, with pbrt-v2's parameter names and defaults (lrt draft App. C).
+// Camera "name" -> Camera, with pbrt-v2's parameter names and defaults (lrt draft App. C), and
+// pbrt-v3's "realistic" camera (pbrt 3e §6.4).
 #include <cmath>
 
 #include "cameras/camera.h"
 #include "cameras/environment_camera.h"
+#include "cameras/lens_file.h"
 #include "cameras/orthographic_camera.h"
 #include "cameras/perspective_camera.h"
+#include "cameras/realistic_camera.h"
+#include "scene/scene_path.h"
 
 namespace candela {
 
@@ -87,11 +91,49 @@ EnvironmentCameraOptions environmentOptions(const ParamSet& params, const Point2
   return o;
 }
 
+// pbrt-v3's "realistic" camera: the lens file is read relative to the scene file naming it.
+RealisticCameraOptions realisticOptions(const ParamSet& params, const Point2i& resolution,
+                                        Float filmDiagonal, const FileLoc& loc) {
+  RealisticCameraOptions o;
+  o.fullResolution = resolution;
+  auto where = [&](const char* name) { return params.locationOf(name, loc); };
+  std::string lensFile = params.getOneString("lensfile", "");
+  if (lensFile.empty())
+    throw SceneError(where("lensfile"), "camera \"realistic\" needs a \"string lensfile\"");
+  std::string path = resolveScenePath(lensFile, where("lensfile").file);
+  try {
+    o.lens = readLensFile(path);
+  } catch (const FileError& e) {
+    throw SceneError(where("lensfile"), std::string("cannot read \"lensfile\": ") + e.what());
+  }
+  // Millimetres in the scene, metres inside (pbrt 3e §6.4.1).
+  Float aperture = params.getOneFloat("aperturediameter", 1);
+  if (!(aperture > 0) || !std::isfinite(aperture))
+    throw SceneError(where("aperturediameter"),
+                     "\"aperturediameter\" must be positive (mm), got " + str(aperture));
+  o.apertureDiameter = double(aperture) * 1e-3;
+  Float focus = params.getOneFloat("focusdistance", 10);
+  if (!(focus > 0) || !std::isfinite(focus))
+    throw SceneError(where("focusdistance"),
+                     "\"focusdistance\" must be positive, got " + str(focus));
+  o.focusDistance = focus;
+  o.simpleWeighting = params.getOneBool("simpleweighting", true);
+  if (!(filmDiagonal > 0) || !std::isfinite(filmDiagonal))
+    throw SceneError(loc,
+                     "the film's \"diagonal\" must be positive (mm), got " + str(filmDiagonal));
+  o.filmDiagonal = double(filmDiagonal) * 1e-3;
+  o.shutterOpen = params.getOneFloat("shutteropen", 0);
+  o.shutterClose = params.getOneFloat("shutterclose", 1);
+  if (o.shutterClose < o.shutterOpen) std::swap(o.shutterOpen, o.shutterClose);
+  return o;
+}
+
 }  // namespace
 
 std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
                                      const AnimatedTransform& cameraToWorld,
-                                     const Point2i& fullResolution, const FileLoc& loc) {
+                                     const Point2i& fullResolution, const FileLoc& loc,
+                                     Float filmDiagonal) {
   if (fullResolution.x < 1 || fullResolution.y < 1)
     throw SceneError(loc, "camera: image resolution must be positive");
   if (name == "perspective")
@@ -103,14 +145,25 @@ std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& pa
   if (name == "environment")
     return std::make_unique<EnvironmentCamera>(cameraToWorld,
                                                environmentOptions(params, fullResolution, loc));
-  throw SceneError(
-      loc, "unknown camera \"" + name + "\" (known: perspective, orthographic, environment)");
+  if (name == "realistic") {
+    RealisticCameraOptions o = realisticOptions(params, fullResolution, filmDiagonal, loc);
+    try {
+      return std::make_unique<RealisticCamera>(cameraToWorld, o);
+    } catch (const std::runtime_error& e) {
+      throw SceneError(params.locationOf("focusdistance", params.locationOf("lensfile", loc)),
+                       "camera \"realistic\" cannot focus at \"focusdistance\" " +
+                           str(Float(o.focusDistance)) + " m: " + e.what());
+    }
+  }
+  throw SceneError(loc, "unknown camera \"" + name +
+                            "\" (known: perspective, orthographic, environment, realistic)");
 }
 
 std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
                                      const Transform& cameraToWorld, const Point2i& fullResolution,
-                                     const FileLoc& loc) {
-  return createCamera(name, params, AnimatedTransform(cameraToWorld), fullResolution, loc);
+                                     const FileLoc& loc, Float filmDiagonal) {
+  return createCamera(name, params, AnimatedTransform(cameraToWorld), fullResolution, loc,
+                      filmDiagonal);
 }
 
 }  // namespace candela

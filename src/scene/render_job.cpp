@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <sstream>
 
 #include "accel/aggregate_factory.h"
@@ -235,8 +236,13 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   reportUnused(filterDesc, warn);
   CameraDesc camDesc = desc.camera;
   if (camDesc.name.empty()) camDesc.name = "perspective";
+  // pbrt-v3's Film "diagonal" (mm): the physical film the realistic camera's lens images onto.
+  Float filmDiagonal = filmParams.getOneFloat("diagonal", 35);
+  if (!(filmDiagonal > 0) || !std::isfinite(filmDiagonal))
+    throw SceneError(filmParams.locationOf("diagonal", filmDesc.loc),
+                     "\"diagonal\" must be positive (mm), got " + std::to_string(filmDiagonal));
   job.camera = createCamera(camDesc.name, camDesc.params, animated(camDesc.cameraToWorld),
-                            job.film->fullResolution(), camDesc.loc);
+                            job.film->fullResolution(), camDesc.loc, filmDiagonal);
   reportUnused(camDesc, warn);
 
   // Sampler and integrator.
