@@ -236,13 +236,10 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   reportUnused(filterDesc, warn);
   CameraDesc camDesc = desc.camera;
   if (camDesc.name.empty()) camDesc.name = "perspective";
-  // pbrt-v3's Film "diagonal" (mm): the physical film the realistic camera's lens images onto.
-  Float filmDiagonal = filmParams.getOneFloat("diagonal", 35);
-  if (!(filmDiagonal > 0) || !std::isfinite(filmDiagonal))
-    throw SceneError(filmParams.locationOf("diagonal", filmDesc.loc),
-                     "\"diagonal\" must be positive (mm), got " + std::to_string(filmDiagonal));
+  // pbrt-v3's Film "diagonal" (mm, checked by createFilm): the physical film the realistic
+  // camera's lens images onto.
   job.camera = createCamera(camDesc.name, camDesc.params, animated(camDesc.cameraToWorld),
-                            job.film->fullResolution(), camDesc.loc, filmDiagonal);
+                            job.film->fullResolution(), camDesc.loc, job.film->diagonal());
   reportUnused(camDesc, warn);
 
   // Sampler and integrator.
