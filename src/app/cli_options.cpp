@@ -33,6 +33,14 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
                  "Code that refines loopsubdiv shapes: book (ours, default) or opensubdiv; the "
                  "surface is the same")
       ->check(CLI::IsMember({"book", "opensubdiv"}));
+  app.add_option("--dialect", o->dialect,
+                 "Scene format whose material models apply: pbrt-v2 or pbrt-v3 (default: "
+                 "pbrt-v3 for scenes with Integrator or media statements, else pbrt-v2)")
+      ->check(CLI::IsMember({"pbrt-v2", "pbrt-v3"}));
+  app.add_option("--coat-fresnel", o->coatFresnel,
+                 "plastic's coat Fresnel: exact (air outside, 1.5 inside) or pbrt (pbrt's "
+                 "reversed indices, pbrt-v3 issue #210)")
+      ->check(CLI::IsMember({"exact", "pbrt"}));
   app.add_flag("-q,--quiet", o->quiet, "No progress or statistics output");
   app.add_flag("-v,--verbose", o->verbose, "More detail");
   app.add_flag("--stats", o->stats, "Print what the scene built (geometry, Embree, lights...)");

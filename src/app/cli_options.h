@@ -23,8 +23,10 @@ struct CliOptions {
   std::string accelerator;      // overrides the scene's Accelerator; "" = the scene's (embree)
   std::string subdiv = "book";  // the code that refines "loopsubdiv": book or opensubdiv
   bool half = false;
-  std::string compression;  // "" = the Film's "compression" (default zip)
-  std::string aovs;         // "albedo,normal,..." added to the Film's "aovs"
+  std::string dialect;                // "" (detect), "pbrt-v2" or "pbrt-v3": material models
+  std::string coatFresnel = "exact";  // plastic's coat: "exact" or "pbrt" (reversed indices)
+  std::string compression;            // "" = the Film's "compression" (default zip)
+  std::string aovs;                   // "albedo,normal,..." added to the Film's "aovs"
   std::string ocioConfig, display = "sRGB", view = "Standard";
   std::string colorSpace;  // working and output space ("" = the config's scene_linear)
   std::string toneMap;     // preview tone map, overriding the scene's ToneMap statement

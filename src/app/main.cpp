@@ -74,6 +74,9 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.accelerator = cli.accelerator;
   build.subdiv = cli.subdiv == "opensubdiv" ? LoopProducer::OpenSubdiv : LoopProducer::Book;
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
+  build.materialModels.dialect = parseSceneDialect(cli.dialect);
+  build.materialModels.plasticCoat =
+      cli.coatFresnel == "pbrt" ? CoatFresnel::ReversedAsPbrt : CoatFresnel::Exact;
   build.colorMatrix = writer.workingSpaceMatrix();
   build.loadImage = [&writer](const std::string& path, const std::string& colorSpace) {
     const ColorManagement& cm = writer.colorManagement();

@@ -11,6 +11,11 @@ const BSDF* SubstrateMaterial::getBSDF(const SurfaceInteraction& si0, MemoryAren
   BSDF* bsdf = arena.make<BSDF>(si);
   Spectrum kd = clampSpectrum(kd_->evaluate(si)), ks = clampSpectrum(ks_->evaluate(si));
   if (kd.isBlack() && ks.isBlack()) return bsdf;
+  if (trowbridgeReitz_) {
+    bsdf->add(
+        arena.make<TrowbridgeReitzFresnelBlend>(kd, ks, trowbridgeReitz_->distribution(si, arena)));
+    return bsdf;
+  }
   const MicrofacetDistribution* d = arena.make<AnisotropicDistribution>(
       blinnExponent(uRoughness_->evaluate(si)), blinnExponent(vRoughness_->evaluate(si)));
   bsdf->add(arena.make<FresnelBlend>(kd, ks, d));

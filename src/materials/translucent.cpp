@@ -3,6 +3,7 @@
 #include "materials/plastic.h"
 #include "reflection/brdf_to_btdf.h"
 #include "reflection/microfacet.h"
+#include "reflection/trowbridge_reitz_bxdfs.h"
 
 namespace candela {
 
@@ -20,6 +21,13 @@ const BSDF* TranslucentMaterial::getBSDF(const SurfaceInteraction& si0, MemoryAr
   Spectrum ks = clampSpectrum(ks_->evaluate(si));
   if (!ks.isBlack()) {
     const Fresnel* fresnel = arena.make<FresnelDielectric>(Float(1), index_);
+    if (trowbridgeReitz_) {
+      const TrowbridgeReitzDistribution* d = trowbridgeReitz_->distribution(si, arena);
+      if (!r.isBlack()) bsdf->add(arena.make<TrowbridgeReitzReflection>(r * ks, fresnel, d));
+      if (!t.isBlack())
+        bsdf->add(arena.make<TrowbridgeReitzTransmission>(t * ks, d, Float(1), index_));
+      return bsdf;
+    }
     const MicrofacetDistribution* d =
         arena.make<BlinnDistribution>(blinnExponent(roughness_->evaluate(si)));
     if (!r.isBlack()) bsdf->add(arena.make<MicrofacetReflection>(r * ks, fresnel, d));

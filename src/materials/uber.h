@@ -3,9 +3,17 @@
 // transmission of 1 - opacity. As in plastic, the dielectric Fresnel terms have air outside and
 // the index inside (not the book code's reversed order), and the BSDF's eta stays 1: passing
 // straight through bends nothing.
+//
+// pbrt-v3's uber (pbrt 3e §9.2; also Kt 0, uroughness and vroughness overriding roughness,
+// remaproughness, "eta" as another name for "index") has a Trowbridge-Reitz glossy lobe, adds a
+// specular refraction Kt into the index, and its BSDF carries the index unless the surface is
+// partly transparent.
 #pragma once
 
+#include <optional>
+
 #include "materials/material.h"
+#include "materials/trowbridge_reitz_roughness.h"
 
 namespace candela {
 
@@ -14,16 +22,22 @@ class UberMaterial : public Material {
   struct Textures {
     const Texture<Spectrum>*kd, *ks, *kr, *opacity;
     const Texture<Float>*roughness, *index;
+    const Texture<Spectrum>* kt = nullptr;  // pbrt-v3 only
   };
   explicit UberMaterial(const Textures& t, const Texture<Float>* bump = nullptr)
       : Material(bump), t_(t) {}
+  // pbrt-v3's model; t.roughness is unused (roughness gives the u and v textures).
+  UberMaterial(const Textures& t, const TrowbridgeReitzRoughness& roughness,
+               const Texture<Float>* bump = nullptr)
+      : Material(bump), t_(t), trowbridgeReitz_(roughness) {}
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
-  // Only a constant black Kr with a constant opacity of 1 (the defaults) rules the mirror and the
-  // pass-through out.
+  // Only a constant black Kr (and Kt) with a constant opacity of 1 (the defaults) rules the
+  // mirror and the pass-through out.
   bool maybeSpecular() const override;
 
  private:
   Textures t_;
+  std::optional<TrowbridgeReitzRoughness> trowbridgeReitz_;
 };
 
 }  // namespace candela

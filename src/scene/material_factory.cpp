@@ -46,8 +46,76 @@ class ScaledFloatTexture : public Texture<Float> {
 }  // namespace
 
 MaterialFactory::MaterialFactory(const SceneDescription& desc, TextureFactory& textures,
-                                 std::vector<std::unique_ptr<Material>>* owned, Used used)
-    : desc_(desc), textures_(textures), owned_(owned), used_(std::move(used)) {}
+                                 std::vector<std::unique_ptr<Material>>* owned, Used used,
+                                 MaterialModelOptions models)
+    : desc_(desc),
+      textures_(textures),
+      owned_(owned),
+      used_(std::move(used)),
+      models_(models),
+      sceneDialect_(models.dialect.value_or(detectSceneDialect(desc))) {}
+
+bool MaterialFactory::usesPbrtV3Models(const MaterialDesc& d) const {
+  if (models_.dialect) return *models_.dialect == SceneDialect::PbrtV3;
+  return sceneDialect_ == SceneDialect::PbrtV3 || materialHasPbrtV3Parameters(d);
+}
+
+std::unique_ptr<Material> MaterialFactory::createPbrtV3(const MaterialDesc& d,
+                                                        const Texture<Float>* bump) {
+  const ParamSet& p = d.params;
+  const FileLoc& loc = d.loc;
+  auto spec = [&](const char* name, Float def) {
+    return textures_.spectrum(p, name, Spectrum(def), loc);
+  };
+  auto flt = [&](const char* name, Float def) { return textures_.scalar(p, name, def, loc); };
+  // A texture only when the parameter is given, so that unused defaults are not looked up.
+  auto given = [&](const char* name) { return p.find(name) ? flt(name, 0) : nullptr; };
+  TrowbridgeReitzRoughness r;
+  r.remap = p.getOneBool("remaproughness", true);
+  // pbrt-v3 reads "eta" and, without it, "index".
+  auto index = [&] { return p.find("eta") ? flt("eta", 1.5f) : flt("index", 1.5f); };
+  if (d.name == "metal") {
+    const Texture<Float>*u = given("uroughness"), *v = given("vroughness");
+    const Texture<Float>* rough = !u || !v ? flt("roughness", 0.01f) : nullptr;
+    r.u = u ? u : rough;
+    r.v = v ? v : rough;
+    return std::make_unique<MetalMaterial>(textures_.spectrum(p, "eta", copper::kEta, loc),
+                                           textures_.spectrum(p, "k", copper::kK, loc), r, bump);
+  }
+  if (d.name == "plastic") {
+    r.u = r.v = flt("roughness", 0.1f);
+    return std::make_unique<PlasticMaterial>(spec("Kd", 0.25f), spec("Ks", 0.25f), r, bump,
+                                             models_.plasticCoat);
+  }
+  if (d.name == "substrate") {
+    r.u = flt("uroughness", 0.1f);
+    r.v = flt("vroughness", 0.1f);
+    return std::make_unique<SubstrateMaterial>(spec("Kd", 0.5f), spec("Ks", 0.5f), r, bump);
+  }
+  if (d.name == "uber") {
+    // v falls back to u here, to roughness in metal: pbrt-v3 differs between the two.
+    r.u = given("uroughness");
+    if (!r.u) r.u = flt("roughness", 0.1f);
+    r.v = given("vroughness");
+    if (!r.v) r.v = r.u;
+    UberMaterial::Textures t{spec("Kd", 0.25f),  spec("Ks", 0.25f), spec("Kr", 0),
+                             spec("opacity", 1), nullptr,           index(),
+                             spec("Kt", 0)};
+    return std::make_unique<UberMaterial>(t, r, bump);
+  }
+  if (d.name == "translucent") {
+    r.u = r.v = flt("roughness", 0.1f);
+    return std::make_unique<TranslucentMaterial>(spec("Kd", 0.25f), spec("Ks", 0.25f),
+                                                 spec("reflect", 0.5f), spec("transmit", 0.5f), r,
+                                                 p.getOneFloat("index", 1.5f), bump);
+  }
+  if (d.name == "glass") {
+    r.u = flt("uroughness", 0);
+    r.v = flt("vroughness", 0);
+    return std::make_unique<GlassMaterial>(spec("Kr", 1), spec("Kt", 1), index(), r, bump);
+  }
+  return nullptr;
+}
 
 MaterialFactory::~MaterialFactory() = default;
 
@@ -156,11 +224,13 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
     return std::make_unique<MixMaterial>(m1, m2, spec("amount", 0.5f));
   }
   const Texture<Float>* bump = bumpMap(d);
+  if (usesPbrtV3Models(d))
+    if (auto m = createPbrtV3(d, bump)) return m;
   if (d.name == "matte")
     return std::make_unique<MatteMaterial>(spec("Kd", 0.5f), flt("sigma", 0), bump);
   if (d.name == "plastic")
     return std::make_unique<PlasticMaterial>(spec("Kd", 0.25f), spec("Ks", 0.25f),
-                                             flt("roughness", 0.1f), bump);
+                                             flt("roughness", 0.1f), bump, models_.plasticCoat);
   if (d.name == "translucent")
     return std::make_unique<TranslucentMaterial>(
         spec("Kd", 0.25f), spec("Ks", 0.25f), spec("reflect", 0.5f), spec("transmit", 0.5f),

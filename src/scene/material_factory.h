@@ -7,6 +7,11 @@
 //   substrate (Kd .5, Ks .5, uroughness .1, vroughness .1), uber (Kd .25, Ks .25, Kr 0,
 //   roughness .1, opacity 1, index 1.5), mix (amount .5, namedmaterial1, namedmaterial2),
 //   measured (filename), and lrt's Lafortune fit "clay".
+// In a pbrt-v3 scene (scene/scene_dialect.h) metal, plastic, substrate, uber, translucent and
+// glass are pbrt-v3's instead: Trowbridge-Reitz microfacets with Smith masking and the parameters
+// "remaproughness" (true), metal's and uber's "uroughness"/"vroughness" (default: roughness),
+// uber's "Kt" (0), glass's "uroughness"/"vroughness" (0: smooth), and "eta" for "index" on uber and
+// glass.
 // Every material takes a float texture "bumpmap"; lrt's BumpMap statement ("windy": scale 1,
 // stretch 1; "bumpy": octaves 6, omega .5, scale 1) bumps the material in effect.
 //
@@ -24,12 +29,20 @@
 #include <vector>
 
 #include "materials/material.h"
+#include "materials/plastic.h"
 #include "reflection/irregular_brdf.h"
 #include "reflection/merl_brdf.h"
 #include "scene/scene_description.h"
+#include "scene/scene_dialect.h"
 #include "scene/texture_factory.h"
 
 namespace candela {
+
+// How the factory chooses between the dialects' models.
+struct MaterialModelOptions {
+  std::optional<SceneDialect> dialect;  // nullopt: detected from the scene and each material
+  CoatFresnel plasticCoat = CoatFresnel::Exact;
+};
 
 class MaterialFactory {
  public:
@@ -39,7 +52,8 @@ class MaterialFactory {
   // Materials are appended to *owned; the factory owns textures of BumpMap statements and must
   // live as long as the materials (the render job owns both).
   MaterialFactory(const SceneDescription& desc, TextureFactory& textures,
-                  std::vector<std::unique_ptr<Material>>* owned, Used used = {});
+                  std::vector<std::unique_ptr<Material>>* owned, Used used = {},
+                  MaterialModelOptions models = {});
   ~MaterialFactory();
   MaterialFactory(const MaterialFactory&) = delete;
   MaterialFactory& operator=(const MaterialFactory&) = delete;
@@ -55,11 +69,16 @@ class MaterialFactory {
   const Material* named(const MaterialDesc& d, const std::string& param);
   const Texture<Float>* bumpMap(const MaterialDesc& d);
   std::unique_ptr<Material> measured(const MaterialDesc& d, const Texture<Float>* bump);
+  bool usesPbrtV3Models(const MaterialDesc& d) const;
+  // pbrt-v3's version of a microfacet material, or null for other names.
+  std::unique_ptr<Material> createPbrtV3(const MaterialDesc& d, const Texture<Float>* bump);
 
   const SceneDescription& desc_;
   TextureFactory& textures_;
   std::vector<std::unique_ptr<Material>>* owned_;
   Used used_;
+  MaterialModelOptions models_;
+  SceneDialect sceneDialect_;
   std::map<int, const Material*> byIndex_;
   std::set<int> inProgress_;  // mix recursion guard
   std::map<std::string, std::shared_ptr<const MerlBrdfTable>> merl_;

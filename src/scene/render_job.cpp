@@ -71,10 +71,11 @@ PluginDesc orDefault(const PluginDesc& d, const std::string& name) {
 // MaterialFactory (which also resolves mix's named materials and shares measured tables).
 class MaterialCache {
  public:
-  MaterialCache(const SceneDescription& desc, RenderJob& job, const WarningSink& warn) {
+  MaterialCache(const SceneDescription& desc, RenderJob& job, const WarningSink& warn,
+                const MaterialModelOptions& models) {
     auto used = [warn](const PluginDesc& d) { reportUnused(d, warn); };
     job.materialFactory =
-        std::make_unique<MaterialFactory>(desc, *job.textures, &job.materials, used);
+        std::make_unique<MaterialFactory>(desc, *job.textures, &job.materials, used, models);
     factory_ = job.materialFactory.get();
   }
   const Material* get(int index) { return factory_->get(index); }
@@ -296,7 +297,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   reportUnused(integratorDesc, warn);
 
   // Geometry, materials and lights: only what the shapes use.
-  MaterialCache materials(desc, job, warn);
+  MaterialCache materials(desc, job, warn, options.materialModels);
   job.namedMedia = std::make_unique<NamedMedia>(desc);
   addGeometry(desc, materials, job, options);
   SceneMedia sceneMedia;

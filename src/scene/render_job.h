@@ -21,6 +21,7 @@
 #include "materials/material.h"
 #include "renderers/image_renderer.h"
 #include "samplers/sampler.h"
+#include "scene/material_factory.h"
 #include "scene/scene.h"
 #include "scene/scene_description.h"
 #include "scene/texture_factory.h"
@@ -47,6 +48,9 @@ struct BuildOptions {
   // scene_linear RGB -> working-space RGB for every colour parameter (--colorspace); none =
   // identity.
   std::optional<std::array<Float, 9>> colorMatrix;
+  // The materials' dialect (--dialect; default: detected) and plastic's coat Fresnel
+  // (--coat-fresnel).
+  MaterialModelOptions materialModels;
   WarningSink warn;           // may be empty
   int nThreads = 0;           // for the integrator's preprocess (0: all cores)
   bool showProgress = false;  // the preprocess's progress on standard error
@@ -62,7 +66,7 @@ struct BuildStats {
   long lights = 0, areaLights = 0;
   long materials = 0;
   long textures = 0;
-  long volumeRegions = 0;  // pbrt-v2 Volume statements
+  long volumeRegions = 0;                     // pbrt-v2 Volume statements
   long namedMedia = 0, mediumInterfaces = 0;  // pbrt-v3 media created, shapes' interfaces
   AggregateStats aggregate;
   std::string report() const;
