@@ -60,10 +60,11 @@ using SamplerWarning = std::function<void(const FileLoc&, const std::string&)>;
 // the lens position, in that order of dimensions.
 CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filter& filter);
 
-// The sampler named by a Sampler statement: "random", "stratified", "lowdiscrepancy", "halton",
-// "bestcandidate" or "adaptive". sppOverride > 0 replaces the scene's sample count (the stratified
-// sampler picks xsamples x ysamples = sppOverride, as square as it divides; the adaptive sampler
-// takes it as maxsamples). Counts the (0,2)-sequence samplers cannot use are rounded up to a
+// The sampler named by a Sampler statement: pbrt-v2's "random", "stratified", "lowdiscrepancy",
+// "halton", "bestcandidate" and "adaptive", and pbrt-v3's "02sequence", "maxmindist" and "sobol".
+// sppOverride > 0 replaces the scene's sample count (the stratified sampler picks xsamples x
+// ysamples = sppOverride, as square as it divides; the adaptive sampler takes it as maxsamples).
+// Counts the (0,2)-sequence, max-min-distance and Sobol' samplers cannot use are rounded up to a
 // power of two with a warning, to warn or, when it is empty, to standard error. Unknown names and
 // bad counts are SceneErrors at loc.
 std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& params,

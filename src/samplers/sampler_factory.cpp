@@ -1,4 +1,5 @@
-// Sampler "name" -> Sampler, with pbrt-v2's parameter names and defaults (lrt draft App. C).
+// Sampler "name" -> Sampler, with pbrt-v2's parameter names and defaults (lrt draft App. C) and,
+// for the samplers pbrt-v3 added, pbrt-v3's (pbrt-v3 file format documentation, "Samplers").
 #include <cmath>
 #include <iostream>
 
@@ -6,9 +7,13 @@
 #include "samplers/best_candidate_sampler.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/lowdiscrepancy_sampler.h"
+#include "samplers/max_min_dist_matrices.h"
+#include "samplers/maxmindist_sampler.h"
 #include "samplers/random_sampler.h"
 #include "samplers/sampler.h"
+#include "samplers/sobol_sampler.h"
 #include "samplers/stratified_sampler.h"
+#include "samplers/zero_two_sequence_sampler.h"
 
 namespace candela {
 
@@ -63,9 +68,46 @@ int powerOfTwoCount(int n, const std::string& what, const FileLoc& loc,
 }
 
 // The scene's count is read (so validated, and not reported unused) even when --spp overrides it.
-int sampleCount(const ParamSet& params, int sppOverride, const FileLoc& loc) {
-  int sceneCount = positiveCount(params, "pixelsamples", 4, loc);
+// pbrt-v2's samplers default to 4 samples per pixel, pbrt-v3's to 16.
+int sampleCount(const ParamSet& params, int sppOverride, const FileLoc& loc, int def = 4) {
+  int sceneCount = positiveCount(params, "pixelsamples", def, loc);
   return sppOverride > 0 ? sppOverride : sceneCount;
+}
+
+// The count of a sampler that needs a power of two, rounded up with a warning that names where the
+// count came from: the command line's --spp, or the scene's parameter.
+int powerOfTwoSampleCount(const std::string& sampler, const ParamSet& params, int sppOverride,
+                          int def, const FileLoc& loc, const SamplerWarning& warn) {
+  int count = sampleCount(params, sppOverride, loc, def);
+  return sppOverride > 0
+             ? powerOfTwoCount(count, sampler + " sampler: --spp", FileLoc{"--spp", 0, 0}, warn)
+             : powerOfTwoCount(count, sampler + " sampler: pixelsamples",
+                               params.locationOf("pixelsamples", loc), warn);
+}
+
+// pbrt-v3's pixel samplers' "dimensions": how many 1D and how many 2D dimensions are stratified.
+int dimensionCount(const std::string& sampler, const ParamSet& params, const FileLoc& loc) {
+  int v = params.getOneInt("dimensions", 4);
+  if (v < 1)
+    throw SceneError(
+        params.locationOf("dimensions", loc),
+        sampler + " sampler: \"dimensions\" must be at least 1, got " + std::to_string(v));
+  return v;
+}
+
+std::unique_ptr<Sampler> createMaxMinDist(const ParamSet& params, uint64_t seed, int sppOverride,
+                                          const FileLoc& loc, const SamplerWarning& warn) {
+  int spp = powerOfTwoSampleCount("maxmindist", params, sppOverride, 16, loc, warn);
+  int dims = dimensionCount("maxmindist", params, loc);
+  // pbrt-v3 lowers larger counts with a warning too.
+  constexpr int kMax = 1 << kMaxMinDistLog2Max;
+  if (spp > kMax) {
+    warnAt(warn, sppOverride > 0 ? FileLoc{"--spp", 0, 0} : params.locationOf("pixelsamples", loc),
+           "maxmindist sampler: at most " + std::to_string(kMax) + " samples per pixel, " +
+               std::to_string(spp) + " lowered to " + std::to_string(kMax));
+    spp = kMax;
+  }
+  return std::make_unique<MaxMinDistSampler>(spp, dims, seed);
 }
 
 std::unique_ptr<Sampler> createAdaptive(const ParamSet& params, uint64_t seed, int sppOverride,
@@ -122,15 +164,17 @@ std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& 
       throw SceneError(loc, "stratified sampler: xsamples * ysamples is too large");
     return std::make_unique<StratifiedSampler>(xs, ys, jitter, seed);
   }
-  if (name == "lowdiscrepancy") {
-    // A count from --spp is the command line's, not the scene's: the warning says so.
-    int count = sampleCount(params, sppOverride, loc);
-    int spp = sppOverride > 0 ? powerOfTwoCount(count, "lowdiscrepancy sampler: --spp",
-                                                FileLoc{"--spp", 0, 0}, warn)
-                              : powerOfTwoCount(count, "lowdiscrepancy sampler: pixelsamples",
-                                                params.locationOf("pixelsamples", loc), warn);
-    return std::make_unique<LowDiscrepancySampler>(spp, seed);
+  if (name == "lowdiscrepancy")
+    return std::make_unique<LowDiscrepancySampler>(
+        powerOfTwoSampleCount(name, params, sppOverride, 4, loc, warn), seed);
+  if (name == "02sequence") {
+    int spp = powerOfTwoSampleCount(name, params, sppOverride, 16, loc, warn);
+    return std::make_unique<ZeroTwoSequenceSampler>(spp, dimensionCount(name, params, loc), seed);
   }
+  if (name == "maxmindist") return createMaxMinDist(params, seed, sppOverride, loc, warn);
+  if (name == "sobol")
+    return std::make_unique<SobolSampler>(
+        powerOfTwoSampleCount(name, params, sppOverride, 16, loc, warn), seed);
   if (name == "halton")
     return std::make_unique<HaltonSampler>(sampleCount(params, sppOverride, loc), seed);
   if (name == "bestcandidate") {
@@ -146,7 +190,7 @@ std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& 
   if (name == "adaptive") return createAdaptive(params, seed, sppOverride, loc, warn);
   throw SceneError(loc, "unknown sampler \"" + name +
                             "\" (known: random, stratified, lowdiscrepancy, halton, "
-                            "bestcandidate, adaptive)");
+                            "bestcandidate, adaptive, 02sequence, maxmindist, sobol)");
 }
 
 }  // namespace candela

@@ -74,7 +74,9 @@ TEST(SamplerRenderDeterminism, EverySampler) {
        {"\"lowdiscrepancy\" \"integer pixelsamples\" [8]",
         "\"halton\" \"integer pixelsamples\" [6]", "\"bestcandidate\" \"integer pixelsamples\" [4]",
         "\"adaptive\" \"integer minsamples\" [2] \"integer maxsamples\" [8]",
-        "\"random\" \"integer pixelsamples\" [3]"}) {
+        "\"random\" \"integer pixelsamples\" [3]",
+        "\"02sequence\" \"integer pixelsamples\" [4] \"integer dimensions\" [3]",
+        "\"maxmindist\" \"integer pixelsamples\" [8]", "\"sobol\" \"integer pixelsamples\" [4]"}) {
     SCOPED_TRACE(sampler);
     expectSameBitsForAnyThreadsTilesAndCrop(
         scene(sampler, "\"perspective\" \"float fov\" [50]", "\"box\""));

@@ -12,14 +12,18 @@
 
 #include "core/rng.h"
 #include "samplers/adaptive_sampler.h"
+#include "samplers/maxmindist_sampler.h"
 #include "samplers/sampler.h"
+#include "samplers/sobol_sampler.h"
+#include "samplers/zero_two_sequence_sampler.h"
 #include "support/param_items.h"
 
 namespace candela {
 namespace {
 
-const char* const kSamplers[] = {"random", "stratified",    "lowdiscrepancy",
-                                 "halton", "bestcandidate", "adaptive"};
+const char* const kSamplers[] = {"random",     "stratified",    "lowdiscrepancy",
+                                 "halton",     "bestcandidate", "adaptive",
+                                 "02sequence", "maxmindist",    "sobol"};
 
 // The values of one pixel sample: the image plane, then 2D, 1D, 2D, 1D, ...
 std::vector<Float> sampleValues(Sampler& s, Point2i pixel, int index, int dims = 8) {
@@ -116,6 +120,73 @@ TEST(SamplerFactory, NewSamplersDefaultsAndPowerOfTwoRounding) {
   EXPECT_EQ(createSampler("lowdiscrepancy", five, 1, 16, loc, warn)->samplesPerPixel(), 16);
   EXPECT_EQ(warnings.size(), 1u);
   EXPECT_THROW(createSampler("bestcandidate", five, 1, 1 << 17, loc, warn), SceneError);
+}
+
+TEST(SamplerFactory, PbrtV3SamplersParametersAndPowerOfTwoRounding) {
+  FileLoc loc{"v3.pbrt", 4, 1};
+  std::vector<std::string> warnings;
+  SamplerWarning warn = [&](const FileLoc& at, const std::string& m) {
+    warnings.push_back(at.str() + " " + m);
+  };
+  // pbrt-v3's defaults: 16 samples per pixel, 4 dimensions.
+  for (const char* name : {"02sequence", "maxmindist", "sobol"}) {
+    auto s = createSampler(name, ParamSet(), 1, 0, loc, warn);
+    EXPECT_EQ(s->samplesPerPixel(), 16) << name;
+    if (auto* z = dynamic_cast<ZeroTwoSequenceSampler*>(s.get())) {
+      EXPECT_EQ(z->dimensions(), 4);
+    }
+  }
+  EXPECT_NE(dynamic_cast<MaxMinDistSampler*>(
+                createSampler("maxmindist", ParamSet(), 1, 0, loc, warn).get()),
+            nullptr);
+  EXPECT_NE(dynamic_cast<SobolSampler*>(createSampler("sobol", ParamSet(), 1, 0, loc, warn).get()),
+            nullptr);
+  EXPECT_TRUE(warnings.empty());
+
+  ParamSet ps;
+  ps.add(test::ints("pixelsamples", {12}, FileLoc{"v3.pbrt", 5, 9}));
+  ps.add(test::ints("dimensions", {7}));
+  for (const char* name : {"02sequence", "maxmindist", "sobol"}) {
+    warnings.clear();
+    auto s = createSampler(name, ps, 1, 0, loc, warn);
+    EXPECT_EQ(s->samplesPerPixel(), 16) << name;
+    if (auto* z = dynamic_cast<ZeroTwoSequenceSampler*>(s.get())) {
+      EXPECT_EQ(z->dimensions(), 7);
+    }
+    ASSERT_EQ(warnings.size(), 1u) << name;
+    EXPECT_NE(warnings[0].find("v3.pbrt:5:9"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find(name), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("16"), std::string::npos) << warnings[0];
+    // --spp overrides, and is rounded with a warning naming it.
+    warnings.clear();
+    EXPECT_EQ(createSampler(name, ps, 1, 33, loc, warn)->samplesPerPixel(), 64) << name;
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("--spp"), std::string::npos) << warnings[0];
+    warnings.clear();
+    EXPECT_EQ(createSampler(name, ps, 1, 32, loc, warn)->samplesPerPixel(), 32) << name;
+    EXPECT_TRUE(warnings.empty());
+  }
+  // The max-min-distance matrices stop at 2^16 samples; pbrt-v3 lowers larger counts too.
+  warnings.clear();
+  EXPECT_EQ(createSampler("maxmindist", ParamSet(), 1, 1 << 17, loc, warn)->samplesPerPixel(),
+            1 << 16);
+  EXPECT_EQ(warnings.size(), 1u);
+
+  ParamSet bad;
+  bad.add(test::ints("dimensions", {0}, FileLoc{"v3.pbrt", 8, 30}));
+  for (const char* name : {"02sequence", "maxmindist"}) {
+    try {
+      createSampler(name, bad, 1, 0, loc, warn);
+      FAIL() << name;
+    } catch (const SceneError& e) {
+      std::string what = e.what();
+      EXPECT_NE(what.find("v3.pbrt:8:30"), std::string::npos) << what;
+      EXPECT_NE(what.find("dimensions"), std::string::npos) << what;
+    }
+  }
+  ParamSet zero;
+  zero.add(test::ints("pixelsamples", {0}, FileLoc{"v3.pbrt", 9, 2}));
+  EXPECT_THROW(createSampler("sobol", zero, 1, 0, loc, warn), SceneError);
 }
 
 TEST(AdaptiveSampler, FactoryDefaultsAndErrors) {

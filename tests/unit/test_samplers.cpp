@@ -234,14 +234,14 @@ TEST(SamplerFactory, SppOverride) {
 
 TEST(SamplerFactory, ErrorsNameTheProblem) {
   try {
-    createSampler("sobol", ParamSet(), 1, 0, FileLoc{"x.pbrt", 9, 1});
+    createSampler("pmj02bn", ParamSet(), 1, 0, FileLoc{"x.pbrt", 9, 1});
     FAIL();
   } catch (const SceneError& e) {
     std::string what = e.what();
     EXPECT_NE(what.find("x.pbrt:9:1"), std::string::npos);
-    EXPECT_NE(what.find("sobol"), std::string::npos);
-    for (const char* known :
-         {"random", "stratified", "lowdiscrepancy", "halton", "bestcandidate", "adaptive"})
+    EXPECT_NE(what.find("pmj02bn"), std::string::npos);
+    for (const char* known : {"random", "stratified", "lowdiscrepancy", "halton", "bestcandidate",
+                              "adaptive", "02sequence", "maxmindist", "sobol"})
       EXPECT_NE(what.find(known), std::string::npos) << what;
   }
   ParamSet ps;
