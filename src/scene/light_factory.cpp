@@ -49,9 +49,10 @@ std::optional<ImageBuffer> readMap(const LightDesc& desc, const TextureFactory::
 
 std::shared_ptr<const MIPMap<Spectrum>> mipmapOf(const std::optional<ImageBuffer>& image) {
   if (!image) return nullptr;
-  // Clamp: a projector's slide and a goniometric diagram must not wrap around their edges.
+  // Periodic, as pbrt-v2 and pbrt-v3 build these maps: within half a texel of a projector slide's
+  // edge its light blends with the opposite edge's, which pbrt scenes show (light-projection).
   return std::make_shared<MIPMap<Spectrum>>(image->width, image->height,
-                                            spectrumTexels(*image, 1, 1), WrapMode::Clamp);
+                                            spectrumTexels(*image, 1, 1), WrapMode::Repeat);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "scene/material_factory.h"
 #include "scene/named_media.h"
 #include "scene/plugin_factories.h"
+#include "scene/scene_dialect.h"
 #include "scene/shape_factory.h"
 #include "scene/volume_factory.h"
 #include "scene/working_color_space.h"
@@ -199,7 +200,11 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
         std::make_unique<SceneDescription>(convertColors(sceneDesc, *options.colorMatrix));
   const SceneDescription& desc = job.convertedDescription ? *job.convertedDescription : sceneDesc;
   const WarningSink& warn = options.warn;
-  job.textures = std::make_unique<TextureFactory>(desc.textures, options.loadImage, warn);
+  const SceneDialect dialect = options.materialModels.dialect.value_or(detectSceneDialect(desc));
+  job.textures = std::make_unique<TextureFactory>(desc.textures, options.loadImage, warn,
+                                                  dialect == SceneDialect::PbrtV3
+                                                      ? TextureFactory::ImageOrigin::BottomLeft
+                                                      : TextureFactory::ImageOrigin::TopLeft);
 
   // pbrt-v2 Volume regions (lrt draft ch. 12): one medium filling the scene and the volume
   // integrator that renders it (pbrt-v2's default: "emission"); neither exists without regions.

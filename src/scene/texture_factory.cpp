@@ -39,8 +39,11 @@ T getOne(const ParamSet& params, const std::string& name, const T& def) {
 }  // namespace
 
 TextureFactory::TextureFactory(const std::vector<TextureDesc>& descs, ImageLoader loadImage,
-                               Warn warn)
-    : descs_(descs), loadImage_(std::move(loadImage)), warn_(std::move(warn)) {}
+                               Warn warn, ImageOrigin imageOrigin)
+    : imageOrigin_(imageOrigin),
+      descs_(descs),
+      loadImage_(std::move(loadImage)),
+      warn_(std::move(warn)) {}
 
 TextureFactory::~TextureFactory() = default;
 
@@ -252,9 +255,10 @@ std::unique_ptr<Texture<T>> TextureFactory::createImageTexture(const TextureDesc
     const ImageBuffer& img = image(path, colorSpace, d);
     std::vector<T> texels;
     if constexpr (std::is_same_v<T, Float>)
-      texels = bottomRowFirst(floatTexels(img, scale, gamma), img.width);
+      texels = floatTexels(img, scale, gamma);
     else
-      texels = bottomRowFirst(spectrumTexels(img, scale, gamma), img.width);
+      texels = spectrumTexels(img, scale, gamma);
+    if (imageOrigin_ == ImageOrigin::BottomLeft) texels = bottomRowFirst(texels, img.width);
     try {
       mipmap = std::make_shared<const MIPMap<T>>(img.width, img.height, std::move(texels), *wrap);
     } catch (const std::invalid_argument& e) {

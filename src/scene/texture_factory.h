@@ -46,8 +46,12 @@ class TextureFactory {
   static constexpr const char* kStoredLinear = "<stored-linear>";
   using Warn = std::function<void(const FileLoc&, const std::string&)>;
 
+  // Where an image texture's t = 0 lies: pbrt-v3 puts (s, t) = (0, 0) at the image's lower left
+  // corner, pbrt-v2 and the lrt draft at its upper left (scene/scene_dialect.h decides).
+  enum class ImageOrigin { BottomLeft, TopLeft };
+
   explicit TextureFactory(const std::vector<TextureDesc>& descs, ImageLoader loadImage = {},
-                          Warn warn = {});
+                          Warn warn = {}, ImageOrigin imageOrigin = ImageOrigin::BottomLeft);
   ~TextureFactory();
   TextureFactory(const TextureFactory&) = delete;
   TextureFactory& operator=(const TextureFactory&) = delete;
@@ -85,6 +89,7 @@ class TextureFactory {
 
  private:
   using MipKey = std::tuple<std::string, std::string, WrapMode, Float, Float>;
+  ImageOrigin imageOrigin_;
   template <typename T>
   struct Store {
     std::map<size_t, const Texture<T>*> byIndex;  // named textures by their TextureDesc

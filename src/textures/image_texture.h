@@ -21,8 +21,9 @@ namespace candela {
 std::vector<Spectrum> spectrumTexels(const ImageBuffer& image, Float scale, Float gamma);
 std::vector<Float> floatTexels(const ImageBuffer& image, Float scale, Float gamma);
 
-// The rows of a width-wide image in reverse order. Image textures read their texels so, since
-// pbrt-v3 puts (s, t) = (0, 0) at the image's lower left corner (pbrt-v2 at its upper left).
+// The rows of a width-wide image in reverse order. Image textures of pbrt-v3 scenes read their
+// texels so, since pbrt-v3 puts (s, t) = (0, 0) at the image's lower left corner (pbrt-v2 at its
+// upper left).
 template <typename T>
 std::vector<T> bottomRowFirst(const std::vector<T>& texels, int width) {
   std::vector<T> flipped;

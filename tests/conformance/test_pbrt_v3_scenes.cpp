@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -52,11 +53,20 @@ int referenceSamples(const fs::path& scene) {
   return std::stoi(match[1]);
 }
 
+// Options that switch on pbrt-v3's behaviour where candela deliberately differs (README.md,
+// "Deliberate differences"): the scene is compared as pbrt-v3 renders it; the size of the
+// difference is measured separately.
+std::string deliberateDifferenceOptions(const std::string& scene) {
+  // The plastic coat's Fresnel with pbrt's reversed indices (pbrt-v3 issue #210).
+  if (scene == "materials-a" || scene == "materials-b") return " --coat-fresnel pbrt";
+  return "";
+}
+
 ImageBuffer render(const fs::path& scene, int spp, int seed, const fs::path& out) {
   std::ostringstream cmd;
   cmd << '"' << CANDELA_BINARY << "\" -q --preview none --spp " << spp << " --seed " << seed
-      << " -o \"" << out.string() << "\" \"" << scene.string() << "\" 2>\"" << out.string()
-      << ".log\"";
+      << deliberateDifferenceOptions(scene.stem().string()) << " -o \"" << out.string() << "\" \""
+      << scene.string() << "\" 2>\"" << out.string() << ".log\"";
   const int status = std::system(cmd.str().c_str());
   if (status != 0) {
     std::ifstream log(out.string() + ".log");
@@ -67,13 +77,31 @@ ImageBuffer render(const fs::path& scene, int spp, int seed, const fs::path& out
   return readImage(out.string());
 }
 
-// Scenes that still render differently, and why: their differences are reported, not failed.
-// Each is a defect to fix or a deliberate difference that README.md lists.
-const std::map<std::string, std::string> kKnownDifferences = {
+// Regions of scenes that still render differently, and why: their differences are reported, not
+// failed. Each is a defect to fix or a deliberate difference that README.md lists. Regions are
+// (x, y) on the 4 x 4 grid, y down.
+struct KnownDifference {
+  std::set<std::pair<int, int>> regions;
+  std::string reason;
+};
+const std::map<std::string, KnownDifference> kKnownDifferences = {
     {"quadrics-uv",
-     "the cone's apex: a few pixels where u of the surface around the tip differs (2 blocks, 5%)"},
+     {{{1, 2}, {2, 2}},
+      "the cone's apex: a few pixels where u of the surface around the tip differs (2 blocks, "
+      "5%)"}},
     {"quadrics-checker",
-     "the cone's apex, as in quadrics-uv (resolved from about 64 samples per pixel)"},
+     {{{1, 2}, {2, 2}},
+      "the cone's apex, as in quadrics-uv (resolved from about 64 samples per pixel)"}},
+    {"hyperboloid-uv",
+     {{{3, 0}, {0, 1}},
+      "two hyperboloids 0.3-0.7% brighter: candela shades with the fitted surface's own normal, "
+      "pbrt-v3 with one built from the p1-p2 segment's direction, which is tangent only on a "
+      "ruling (README.md, deliberate differences; not yet confirmed as the whole cause)"}},
+    {"hyperboloid-checker", {{{3, 0}, {0, 1}}, "as in hyperboloid-uv"}},
+    {"procedural",
+     {{{0, 2}, {1, 2}, {0, 3}, {1, 3}},
+      "the marble sphere: candela keeps the book's colour spline; pbrt-v3 extrapolates it "
+      "(pbrt-v3 issue #252), a deliberate difference"}},
 };
 
 class PbrtV3Conformance : public testing::TestWithParam<ConformanceCase> {};
@@ -97,17 +125,22 @@ TEST_P(PbrtV3Conformance, AgreesWithPbrtV3sRender) {
   ReferenceAgreement agreement = compareWithReference(a, b, ref, options);
   const double level = stats::sidak(0.001, int(agreement.regions.size()));
   const auto known = kKnownDifferences.find(c.scene);
-  int failed = 0;
+  auto isKnown = [&](const ReferenceRegion& region) {
+    return known != kKnownDifferences.end() &&
+           known->second.regions.count({region.regionX, region.regionY});
+  };
+  int failed = 0, knownFailed = 0;
   for (const ReferenceRegion& region : agreement.regions)
     if (region.pValue < level) {
       ++failed;
-      if (known == kKnownDifferences.end()) {
+      if (isKnown(region))
+        ++knownFailed;
+      else
         ADD_FAILURE() << c.scene << ": " << agreement.describe(region);
-      }
     }
   if (known != kKnownDifferences.end())
-    std::cout << c.scene << ": a known difference, not counted: " << known->second
-              << (failed ? "\n" : " (agrees at this sample count)\n");
+    std::cout << c.scene << ": known differences, not counted: " << known->second.reason << " ("
+              << knownFailed << " region channels differ at this sample count)\n";
   const ReferenceRegion& worst = agreement.worst();
   std::cout << c.scene << " at " << c.samplesPerPixel << " spp: mean ratio " << agreement.meanRatio
             << ", relMSE " << agreement.relMse << ", worst region p " << worst.pValue << " (F "

@@ -4,6 +4,7 @@
 
 #include "scene/texture_factory.h"
 #include "support/param_items.h"
+#include "support/render_scene.h"
 #include "textures/dots.h"
 #include "textures/image_texture.h"
 
@@ -434,4 +435,40 @@ TEST(TextureFactory, ImageTextureTIsZeroAtTheBottomRow) {
   const Texture<Float>* t = f.scalar(test::paramSet({test::texture("x", "i")}), "x", 0, kMatLoc);
   EXPECT_NEAR(t->evaluate(atUV(0.5f, 0.25f)), 1.f, 1e-6f);
   EXPECT_NEAR(t->evaluate(atUV(0.5f, 0.75f)), 0.f, 1e-6f);
+  // pbrt-v2 and the lrt draft: t = 0 at the top row.
+  TextureFactory v2(descs, topDark, {}, TextureFactory::ImageOrigin::TopLeft);
+  t = v2.scalar(test::paramSet({test::texture("x", "i")}), "x", 0, kMatLoc);
+  EXPECT_NEAR(t->evaluate(atUV(0.5f, 0.25f)), 0.f, 1e-6f);
+  EXPECT_NEAR(t->evaluate(atUV(0.5f, 0.75f)), 1.f, 1e-6f);
+}
+
+// The scene's dialect decides: a pbrt-v2 scene (SurfaceIntegrator) reads the top row at t = 0.25,
+// the same scene written for pbrt-v3 (Integrator) the bottom row.
+TEST(TextureFactory, ImageOriginFollowsTheSceneDialect) {
+  auto centre = [](const std::string& integrator) {
+    const std::string scene =
+        "Film \"image\" \"integer xresolution\" [1] \"integer yresolution\" [1]\n"
+        "Camera \"orthographic\" \"float screenwindow\" [-0.01 0.01 -0.01 0.01]\n" +
+        integrator +
+        "\nWorldBegin\n"
+        "LightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+        "Texture \"i\" \"spectrum\" \"imagemap\" \"string filename\" \"rows.exr\"\n"
+        "Material \"matte\" \"texture Kd\" \"i\"\n"
+        // A quad facing the camera with (u, v) = (0.5, 0.25) at its centre.
+        "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]\n"
+        "  \"point P\" [-1 -1 5  1 -1 5  1 1 5  -1 1 5]\n"
+        "  \"float uv\" [0 -0.25  1 -0.25  1 0.75  0 0.75]\n"
+        "WorldEnd\n";
+    test::TestRenderOptions o;
+    o.build.loadImage = [](const std::string&, const std::string&) {
+      ImageBuffer img(1, 2, {"R", "G", "B"});
+      for (int c = 0; c < 3; ++c) img.at(0, 0, c) = 0.2f, img.at(0, 1, c) = 0.8f;  // row 0: top
+      return img;
+    };
+    o.build.sppOverride = 4;
+    return test::renderSceneText(scene, o).film().pixelValue(Point2i(0, 0)).y();
+  };
+  const Float v2 = centre("SurfaceIntegrator \"directlighting\"");
+  const Float v3 = centre("Integrator \"directlighting\"");
+  EXPECT_NEAR(v3 / v2, 4, 0.05) << v2 << " " << v3;
 }
