@@ -1,50 +1,14 @@
 #include "scene/number_file.h"
 
-#include <charconv>
-#include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-
-#include "core/error.h"
+#include "core/number_lines.h"
 
 namespace candela {
 
 std::vector<double> readNumberFile(const std::string& path) {
-  if (path.find('\0') != std::string::npos)
-    throw FileError(path.substr(0, path.find('\0')), "NUL in file name");
-  // Only regular files: a device such as /dev/zero would never end.
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw FileError(path,
-                    std::filesystem::exists(path, ec) ? "not a regular file" : "no such file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open file");
   std::vector<double> numbers;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-    size_t i = 0;
-    while (i < line.size()) {
-      if (std::strchr(" \t\r,\f\v", line[i])) {
-        ++i;
-        continue;
-      }
-      size_t end = i;
-      while (end < line.size() && !std::strchr(" \t\r,\f\v", line[end])) ++end;
-      const char* first = line.data() + i + (line[i] == '+' ? 1 : 0);
-      double v = 0;
-      auto [ptr, err] = std::from_chars(first, line.data() + end, v);
-      if (err != std::errc() || ptr != line.data() + end || !(std::abs(v) <= 3.4e38))
-        throw FileError(path, "line " + std::to_string(lineNo) + ": expected a number, found '" +
-                                  line.substr(i, std::min<size_t>(end - i, 40)) + "'");
-      numbers.push_back(v);
-      i = end;
-    }
-  }
-  if (in.bad()) throw FileError(path, "read error");
+  readNumberLines(path, [&](int, const std::vector<double>& line) {
+    numbers.insert(numbers.end(), line.begin(), line.end());
+  });
   return numbers;
 }
 

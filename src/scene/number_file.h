@@ -1,6 +1,7 @@
 // Files of numbers that scenes name (pbrt-v2's ReadFloatFile format): decimal numbers separated
 // by white space or commas, '#' starting a comment to the end of the line. Used by spectrum
-// files (wavelength-value pairs) and dipolesubsurface's pointsfile.
+// files (wavelength-value pairs) and dipolesubsurface's pointsfile; core/number_lines.h reads them
+// line by line.
 #pragma once
 
 #include <string>
