@@ -66,9 +66,13 @@ CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filte
 // ysamples = sppOverride, as square as it divides; the adaptive sampler takes it as maxsamples).
 // Counts the (0,2)-sequence, max-min-distance and Sobol' samplers cannot use are rounded up to a
 // power of two with a warning, to warn or, when it is empty, to standard error. Unknown names and
-// bad counts are SceneErrors at loc.
+// bad counts are SceneErrors at loc. Counts a scene leaves out are its dialect's: pbrt-v2's
+// (halton 4 samples, stratified 2 x 2) or pbrt-v3's (halton 16, stratified 4 x 4); the others
+// agree.
+enum class SamplerDefaults { PbrtV2, PbrtV3 };
 std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& params,
                                        uint64_t seed, int sppOverride, const FileLoc& loc,
-                                       const SamplerWarning& warn = {});
+                                       const SamplerWarning& warn = {},
+                                       SamplerDefaults defaults = SamplerDefaults::PbrtV2);
 
 }  // namespace candela

@@ -145,7 +145,8 @@ std::unique_ptr<Sampler> createAdaptive(const ParamSet& params, uint64_t seed, i
 
 std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& params,
                                        uint64_t seed, int sppOverride, const FileLoc& loc,
-                                       const SamplerWarning& warn) {
+                                       const SamplerWarning& warn, SamplerDefaults defaults) {
+  const bool v3 = defaults == SamplerDefaults::PbrtV3;
   if (sppOverride < 0)
     throw SceneError(loc, "samples per pixel must be positive, got " + std::to_string(sppOverride));
   if (sppOverride > kMaxSamplesPerPixel)
@@ -153,8 +154,8 @@ std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& 
   if (name == "random")
     return std::make_unique<RandomSampler>(sampleCount(params, sppOverride, loc), seed);
   if (name == "stratified") {
-    int xs = positiveCount(params, "xsamples", 2, loc);
-    int ys = positiveCount(params, "ysamples", 2, loc);
+    int xs = positiveCount(params, "xsamples", v3 ? 4 : 2, loc);
+    int ys = positiveCount(params, "ysamples", v3 ? 4 : 2, loc);
     bool jitter = jitterParam(params);
     // "pixelsamples" (the other samplers' count) is accepted when no strata are given.
     if (params.find("pixelsamples") && !params.find("xsamples") && !params.find("ysamples"))
@@ -176,7 +177,8 @@ std::unique_ptr<Sampler> createSampler(const std::string& name, const ParamSet& 
     return std::make_unique<SobolSampler>(
         powerOfTwoSampleCount(name, params, sppOverride, 16, loc, warn), seed);
   if (name == "halton")
-    return std::make_unique<HaltonSampler>(sampleCount(params, sppOverride, loc), seed);
+    return std::make_unique<HaltonSampler>(sampleCount(params, sppOverride, loc, v3 ? 16 : 4),
+                                           seed);
   if (name == "bestcandidate") {
     int spp = sampleCount(params, sppOverride, loc);
     // The pattern is generated when the sampler is made, in time about linear in the count.

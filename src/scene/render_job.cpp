@@ -248,13 +248,17 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
                             job.film->fullResolution(), camDesc.loc, job.film->diagonal());
   reportUnused(camDesc, warn);
 
-  // Sampler and integrator.
-  PluginDesc samplerDesc = orDefault(desc.sampler, "stratified");
+  // Sampler and integrator, and the counts the scene leaves out, by its dialect: pbrt-v3's default
+  // sampler is halton (16 samples), the lrt draft's and pbrt-v2's are stratified.
+  const bool v3 = dialect == SceneDialect::PbrtV3;
+  const SamplerDefaults samplerDefaults = v3 ? SamplerDefaults::PbrtV3 : SamplerDefaults::PbrtV2;
+  PluginDesc samplerDesc = orDefault(desc.sampler, v3 ? "halton" : "stratified");
   int spp = options.sppOverride;
   if (options.quick && spp == 0) {
     // Without a warning sink: the count is the scene's and only the eighth of it is used.
-    int full = createSampler(samplerDesc.name, samplerDesc.params, options.seed, 0, samplerDesc.loc,
-                             [](const FileLoc&, const std::string&) {})
+    int full = createSampler(
+                   samplerDesc.name, samplerDesc.params, options.seed, 0, samplerDesc.loc,
+                   [](const FileLoc&, const std::string&) {}, samplerDefaults)
                    ->samplesPerPixel();
     spp = std::max(1, full / 8);
   }
@@ -262,11 +266,12 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   SamplerWarning samplerWarn = warn;
   if (!samplerWarn) samplerWarn = [](const FileLoc&, const std::string&) {};
   job.sampler = createSampler(samplerDesc.name, samplerDesc.params, options.seed, spp,
-                              samplerDesc.loc, samplerWarn);
+                              samplerDesc.loc, samplerWarn, samplerDefaults);
   reportUnused(samplerDesc, warn);
-  PluginDesc integratorDesc = !desc.integrator.name.empty()
-                                  ? desc.integrator
-                                  : orDefault(desc.surfaceIntegrator, "directlighting");
+  PluginDesc integratorDesc =
+      !desc.integrator.name.empty()
+          ? desc.integrator
+          : orDefault(desc.surfaceIntegrator, v3 ? "path" : "directlighting");
   ImageRendererContext irc{
       job.camera.get(),    job.sampler.get(),       options.seed, options.quick,
       options.sppOverride, job.film->pixelBounds(), warn};

@@ -13,6 +13,7 @@
 #include "samplers/sampler.h"
 #include "samplers/stratified_sampler.h"
 #include "support/param_items.h"
+#include "support/render_scene.h"
 
 namespace candela {
 namespace {
@@ -252,6 +253,41 @@ TEST(SamplerFactory, ErrorsNameTheProblem) {
   } catch (const SceneError& e) {
     EXPECT_EQ(e.location().line, 5);
   }
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// Counts a scene leaves out follow its dialect: pbrt-v2 halton 4, stratified 2 x 2; pbrt-v3
+// halton 16, stratified 4 x 4; a given count is the same in both.
+TEST(SamplerFactory, DefaultCountsFollowTheDialect) {
+  FileLoc loc{"test.pbrt", 1, 1};
+  const SamplerDefaults v2 = SamplerDefaults::PbrtV2, v3 = SamplerDefaults::PbrtV3;
+  EXPECT_EQ(createSampler("halton", ParamSet(), 1, 0, loc, {}, v2)->samplesPerPixel(), 4);
+  EXPECT_EQ(createSampler("halton", ParamSet(), 1, 0, loc, {}, v3)->samplesPerPixel(), 16);
+  EXPECT_EQ(createSampler("stratified", ParamSet(), 1, 0, loc, {}, v2)->samplesPerPixel(), 4);
+  EXPECT_EQ(createSampler("stratified", ParamSet(), 1, 0, loc, {}, v3)->samplesPerPixel(), 16);
+  ParamSet given;
+  given.add(test::ints("pixelsamples", {8}));
+  EXPECT_EQ(createSampler("halton", given, 1, 0, loc, {}, v3)->samplesPerPixel(), 8);
+}
+
+// A pbrt-v3 scene without a Sampler statement gets pbrt-v3's default, halton with 16 samples; a
+// pbrt-v2 scene the stratified 2 x 2.
+TEST(SamplerFactory, SceneWithoutSamplerGetsItsDialectsDefault) {
+  auto spp = [](const std::string& integrator) {
+    return test::buildSceneText(
+               "Film \"image\" \"integer xresolution\" [4] "
+               "\"integer yresolution\" [4]\n" +
+               integrator + "\nWorldBegin\nWorldEnd\n")
+        .job()
+        .sampler->samplesPerPixel();
+  };
+  EXPECT_EQ(spp("Integrator \"path\""), 16);
+  EXPECT_EQ(spp("SurfaceIntegrator \"path\""), 4);
 }
 
 }  // namespace
