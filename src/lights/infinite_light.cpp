@@ -113,19 +113,23 @@ Float InfiniteAreaLight::pdfLi(const Interaction&, const Vector3f& wi) const {
 Spectrum InfiniteAreaLight::power() const {
   Spectrum integral = radiance_ * (4 * kPi);
   if (distribution_) {
-    // ∫ L dω by the midpoint rule on cells a quarter of a texel wide and high: exact in φ, where
-    // the interpolation is linear, and to a small fraction of a per cent in θ; a cell of row j
-    // covers (cos θ0 - cos θ1) 2π / columns.
+    // ∫ L dω of the interpolated map. Along φ the interpolation is periodic and linear between
+    // texel centres, so a row at any θ integrates exactly to 2π / width times the sum of its
+    // texels, itself linear in θ between the rows' sums. Along θ: the midpoint rule on strips a
+    // quarter of a texel high, each covering (cos θ0 - cos θ1) of solid angle per unit φ.
+    std::vector<Spectrum> rowSums(size_t(map_.height), Spectrum(0));
+    for (int j = 0; j < map_.height; ++j)
+      for (int i = 0; i < map_.width; ++i) rowSums[size_t(j)] += texel(i, j);
+    auto rowSum = [&](int j) { return rowSums[size_t(clamp(j, 0, map_.height - 1))]; };
     constexpr int kSub = 4;
-    const int rows = map_.height * kSub, columns = map_.width * kSub;
+    const int strips = map_.height * kSub;
     Spectrum sum(0);
-    for (int j = 0; j < rows; ++j) {
-      Float cell =
-          (std::cos(kPi * j / rows) - std::cos(kPi * (j + 1) / rows)) * (2 * kPi / columns);
-      Spectrum row(0);
-      for (int i = 0; i < columns; ++i)
-        row += interpolated(Point2f((i + Float(0.5)) / columns, (j + Float(0.5)) / rows));
-      sum += row * cell;
+    for (int k = 0; k < strips; ++k) {
+      Float y = (k + Float(0.5)) / strips * map_.height - Float(0.5);
+      Float y0 = std::floor(y), fy = y - y0;
+      Spectrum row = rowSum(int(y0)) * (1 - fy) + rowSum(int(y0) + 1) * fy;
+      Float band = std::cos(kPi * k / strips) - std::cos(kPi * (k + 1) / strips);
+      sum += row * (band * 2 * kPi / map_.width);
     }
     integral = radiance_ * sum;
   }
