@@ -131,9 +131,24 @@ Spectrum Film::pixelValue(const Point2i& pixel) const {
 }
 
 SplatBuffer& Film::enableSplats() {
+  return enableSplats(
+      Bounds2f(Point2f(0, 0), Point2f(Float(fullResolution_.x), Float(fullResolution_.y))));
+}
+
+SplatBuffer& Film::enableSplats(const Bounds2f& sampledArea) {
   if (!splats_)
-    splats_ = std::make_unique<SplatBuffer>(pixelBounds_, *filter_, maxSampleLuminance_);
+    splats_ =
+        std::make_unique<SplatBuffer>(pixelBounds_, sampledArea, *filter_, maxSampleLuminance_);
   return *splats_;
+}
+
+Bounds2f Film::filterSupportArea() const {
+  // Pixel x's support is [x + 1/2 - r, x + 1/2 + r]; a filter narrower than a pixel still
+  // leaves the image itself to cover.
+  const Vector2f r = filter_->radius();
+  const Float X = Float(fullResolution_.x), Y = Float(fullResolution_.y);
+  return Bounds2f(Point2f(std::min(Float(0), 0.5f - r.x), std::min(Float(0), 0.5f - r.y)),
+                  Point2f(std::max(X, X - 0.5f + r.x), std::max(Y, Y - 0.5f + r.y)));
 }
 
 Float Film::pixelAlpha(const Point2i& pixel) const {

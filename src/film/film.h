@@ -51,8 +51,14 @@ class Film {
 
   // Light splatted from other pixels' samples (see SplatBuffer): allocated on first call. Each
   // pixel's value gains the splats' sum times fullResolution's pixel count over the number of
-  // light paths the renderer reported with addLightPaths.
+  // light paths the renderer reported with addLightPaths. Splats land within sampledArea (in
+  // raster space; by default the full image; see SplatBuffer for the image edges).
   SplatBuffer& enableSplats();
+  SplatBuffer& enableSplats(const Bounds2f& sampledArea);
+  // The raster area whose pixels' filters reach: the full image grown by the filter's radius less
+  // half a pixel. A renderer that places its own film points there (Metropolis) splats every
+  // pixel exactly as the pixel's own filtered samples would, up to the image edges.
+  Bounds2f filterSupportArea() const;
   SplatBuffer* splats() { return splats_.get(); }
   void addLightPaths(uint64_t n) { lightPaths_ += n; }
   // What a splat sum is multiplied by: full-resolution pixels / light paths (0 before any).

@@ -10,11 +10,24 @@ constexpr double kLoScale = 4294967296.0;  // lo counts units of 2^-36 (2^32 per
 constexpr double kMaxHi = 9.0e18 / 2;      // |hi| of one splat, well inside int64
 }  // namespace
 
-SplatBuffer::SplatBuffer(const Bounds2i& pixelBounds, const Filter& filter, Float maxLuminance)
-    : bounds_(pixelBounds),
-      filter_(filter),
-      filterIntegral_(filter.integral()),
-      maxLuminance_(maxLuminance) {
+SplatBuffer::SplatBuffer(const Bounds2i& pixelBounds, const Bounds2f& image, const Filter& filter,
+                         Float maxLuminance)
+    : bounds_(pixelBounds), filter_(filter), maxLuminance_(maxLuminance) {
+  const Vector2f r = filter.radius();
+  const Float whole = filter.integral();
+  filterIntegrals_.assign(size_t(std::max(0, bounds_.area())), whole);
+  for (int y = bounds_.pMin.y; y < bounds_.pMax.y; ++y)
+    for (int x = bounds_.pMin.x; x < bounds_.pMax.x; ++x) {
+      Point2f c(Float(x) + 0.5f, Float(y) + 0.5f);
+      Bounds2f inside(Point2f(image.pMin.x - c.x, image.pMin.y - c.y),
+                      Point2f(image.pMax.x - c.x, image.pMax.y - c.y));
+      if (inside.pMin.x <= -r.x && inside.pMin.y <= -r.y && inside.pMax.x >= r.x &&
+          inside.pMax.y >= r.y)
+        continue;
+      // A filter with negative lobes could leave little or nothing inside; keep ∫f then.
+      Float part = filter.integralOver(inside);
+      if (part > Float(1e-3) * whole) filterIntegrals_[index(Point2i(x, y))] = part;
+    }
   size_t n = size_t(std::max(0, bounds_.area())) * 6;
   words_ = std::make_unique<std::atomic<int64_t>[]>(n);
   for (size_t i = 0; i < n; ++i) words_[i].store(0, std::memory_order_relaxed);
@@ -41,8 +54,13 @@ void SplatBuffer::add(const Point2f& pRaster, const Spectrum& splat) {
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
       Float f = filter_.evaluate(Point2f(pRaster.x - (x + 0.5f), pRaster.y - (y + 0.5f)));
-      if (f != 0) addToPixel(Point2i(x, y), v * (f / filterIntegral_));
+      if (f != 0) addToPixel(Point2i(x, y), v * (f / filterIntegrals_[index(Point2i(x, y))]));
     }
+}
+
+size_t SplatBuffer::index(const Point2i& pixel) const {
+  return size_t(pixel.y - bounds_.pMin.y) * size_t(bounds_.pMax.x - bounds_.pMin.x) +
+         size_t(pixel.x - bounds_.pMin.x);
 }
 
 void SplatBuffer::addToPixel(const Point2i& pixel, const Spectrum& v) {

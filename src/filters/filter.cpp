@@ -57,4 +57,19 @@ FilterSample Filter::sample(const Point2f& u) const {
 
 Float Filter::integral() const { return integral_; }
 
+Float Filter::integralOver(const Bounds2f& offsets) const {
+  Float dx = 2 * radius_.x / Float(nx_), dy = 2 * radius_.y / Float(ny_);
+  double sum = 0;
+  for (int y = 0; y < ny_; ++y) {
+    Float py = -radius_.y + (Float(y) + 0.5f) * dy;
+    if (py < offsets.pMin.y || py >= offsets.pMax.y) continue;
+    for (int x = 0; x < nx_; ++x) {
+      Float px = -radius_.x + (Float(x) + 0.5f) * dx;
+      if (px >= offsets.pMin.x && px < offsets.pMax.x)
+        sum += double(table_[size_t(y) * size_t(nx_) + size_t(x)]);
+    }
+  }
+  return Float(sum * double(dx) * double(dy));
+}
+
 }  // namespace candela

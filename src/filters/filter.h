@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bounds.h"
 #include "core/paramset.h"
 #include "core/sampling.h"
 
@@ -32,6 +33,9 @@ class Filter {
   FilterSample sample(const Point2f& u) const;
   // The integral of f over its support, by numerical quadrature on the table.
   Float integral() const;
+  // The same quadrature over the part of the support inside `offsets` (offsets from the centre):
+  // the table cells whose centres lie in it. Over the whole support it equals integral().
+  Float integralOver(const Bounds2f& offsets) const;
 
   // The sampling table's resolution (cells per axis over [-r, r]).
   int tableWidth() const { return nx_; }

@@ -45,8 +45,11 @@ BdptIntegrator::BdptIntegrator(const CameraImportance& camera, int maxDepth,
   if (visualize_ == Visualize::None) return;
   pixelBox_ = std::make_unique<BoxFilter>(Vector2f(0.5f, 0.5f));
   int n = strategyIndex(maxDepth_ + 1, 1) + 1;
+  // A box of radius 1/2 never reaches past the pixel, so the image edges need no correction.
+  Bounds2f area(Point2f(Float(pixelBounds.pMin.x), Float(pixelBounds.pMin.y)),
+                Point2f(Float(pixelBounds.pMax.x), Float(pixelBounds.pMax.y)));
   for (int i = 0; i < n; ++i)
-    strategyImages_.push_back(std::make_unique<SplatBuffer>(pixelBounds, *pixelBox_));
+    strategyImages_.push_back(std::make_unique<SplatBuffer>(pixelBounds, area, *pixelBox_));
 }
 
 BdptIntegrator::~BdptIntegrator() = default;

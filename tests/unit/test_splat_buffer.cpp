@@ -13,6 +13,7 @@
 #include "film/film.h"
 #include "film/splat_buffer.h"
 #include "filters/box_filter.h"
+#include "filters/gaussian_filter.h"
 #include "filters/triangle_filter.h"
 
 namespace candela {
@@ -40,7 +41,9 @@ TEST(SplatBuffer, SameBitsInAnyOrderAndFromTwoThreads) {
   BoxFilter box(Vector2f(0.5f, 0.5f));
   std::vector<Splat> splats = randomSplats(20000, 1);
   Bounds2i bounds(Point2i(0, 0), Point2i(4, 4));
-  SplatBuffer forward(bounds, box), backward(bounds, box), threaded(bounds, box);
+  Bounds2f image(Point2f(0, 0), Point2f(4, 4));
+  SplatBuffer forward(bounds, image, box), backward(bounds, image, box),
+      threaded(bounds, image, box);
   for (const Splat& s : splats) forward.add(s.p, s.v);
   for (auto it = splats.rbegin(); it != splats.rend(); ++it) backward.add(it->p, it->v);
   std::thread a([&] {
@@ -65,7 +68,7 @@ TEST(SplatBuffer, WithinTheQuantumOfTheExactSum) {
   BoxFilter box(Vector2f(0.5f, 0.5f));
   std::vector<Splat> splats = randomSplats(5000, 2);
   Bounds2i bounds(Point2i(0, 0), Point2i(4, 4));
-  SplatBuffer buf(bounds, box);
+  SplatBuffer buf(bounds, Bounds2f(Point2f(0, 0), Point2f(4, 4)), box);
   long double exact[4][4][3] = {};
   int count[4][4] = {};
   for (const Splat& s : splats) {
@@ -89,7 +92,7 @@ TEST(SplatBuffer, WithinTheQuantumOfTheExactSum) {
 TEST(SplatBuffer, FilterWeightsAndBounds) {
   TriangleFilter tri(Vector2f(1, 1));
   Bounds2i bounds(Point2i(1, 1), Point2i(5, 5));
-  SplatBuffer buf(bounds, tri);
+  SplatBuffer buf(bounds, Bounds2f(Point2f(0, 0), Point2f(6, 6)), tri);
   buf.add(Point2f(2.75f, 3.25f), Spectrum(1));  // centres (2.5, 2.5)...(3.5, 3.5)
   Float fi = tri.integral();
   EXPECT_NEAR(fi, 1, 1e-3f);
@@ -118,16 +121,46 @@ TEST(SplatBuffer, FilmAddsSplatsScaledByPixelsOverLightPaths) {
 // it ([x, x + 1)).
 TEST(SplatBuffer, BoxBorderCountsOnce) {
   BoxFilter box(Vector2f(0.5f, 0.5f));
-  SplatBuffer buf(Bounds2i(Point2i(0, 0), Point2i(3, 3)), box);
+  SplatBuffer buf(Bounds2i(Point2i(0, 0), Point2i(3, 3)), Bounds2f(Point2f(0, 0), Point2f(3, 3)),
+                  box);
   buf.add(Point2f(1, 2), Spectrum(1));
   for (int y = 0; y < 3; ++y)
     for (int x = 0; x < 3; ++x)
       EXPECT_EQ(buf.sum(Point2i(x, y))[0], (x == 1 && y == 2) ? 1.f : 0.f) << x << " " << y;
 }
 
+// Splats come only from inside the image, so near its edges part of a wide filter's support gets
+// none. A constant splatted densely over the image must still come out constant on every pixel,
+// the corners included (weighted by the part of ∫f inside the image, not all of it: with ∫f the
+// corner pixel of this Gaussian came out 0.70 and an edge pixel 0.84), in a crop too.
+TEST(SplatBuffer, ConstantSplatsStayConstantUpToTheImageEdges) {
+  GaussianFilter gaussian(Vector2f(2, 2), 2);
+  const Bounds2f image(Point2f(0, 0), Point2f(6, 5));
+  SplatBuffer whole(Bounds2i(Point2i(0, 0), Point2i(6, 5)), image, gaussian);
+  SplatBuffer crop(Bounds2i(Point2i(4, 0), Point2i(6, 2)), image, gaussian);
+  // A 64 x 64 grid of splats a pixel, each carrying its share of unit density.
+  constexpr int n = 64;
+  const Spectrum share(1.f / (n * n));
+  for (int y = 0; y < 5 * n; ++y)
+    for (int x = 0; x < 6 * n; ++x) {
+      Point2f p((Float(x) + 0.5f) / n, (Float(y) + 0.5f) / n);
+      whole.add(p, share);
+      crop.add(p, share);
+    }
+  for (int y = 0; y < 5; ++y)
+    for (int x = 0; x < 6; ++x) {
+      // The grid's sum against the filter table's quadrature: both second order in 1/64 and 1/32.
+      EXPECT_NEAR(whole.sum(Point2i(x, y))[0], 1, 2e-3f) << x << " " << y;
+      if (x >= 4 && y < 2) {
+        EXPECT_EQ(crop.sum(Point2i(x, y))[0], whole.sum(Point2i(x, y))[0]);
+      }
+    }
+}
+
 TEST(SplatBuffer, RefusesNonFinite) {
   BoxFilter box(Vector2f(0.5f, 0.5f));
-  SplatBuffer buf(Bounds2i(Point2i(0, 0), Point2i(1, 1)), box);
+  SplatBuffer buf(Bounds2i(Point2i(0, 0), Point2i(1, 1)), Bounds2f(Point2f(0, 0), Point2f(1, 1)),
+                  box);
   buf.add(Point2f(0.5f, 0.5f), Spectrum(std::numeric_limits<Float>::infinity()));
   EXPECT_EQ(buf.refused(), 1u);
   EXPECT_EQ(buf.sum(Point2i(0, 0))[0], 0);

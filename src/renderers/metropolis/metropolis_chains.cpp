@@ -35,13 +35,16 @@ struct PathSample {
 
 class PathEvaluator {
  public:
+  // filmArea: where film points are drawn (raster space); imagePixels: the full image's size.
   PathEvaluator(const MetropolisSettings& settings, const BdptIntegrator& paths, const Scene& scene,
-                const Camera& camera, const Point2i& resolution)
+                const Camera& camera, const Bounds2f& filmArea, double imagePixels)
       : settings_(settings),
         paths_(paths),
         scene_(scene),
         camera_(camera),
-        resolution_(resolution),
+        filmArea_(filmArea),
+        areaOverImage_(Float(double(filmArea.pMax.x - filmArea.pMin.x) *
+                             double(filmArea.pMax.y - filmArea.pMin.y) / imagePixels)),
         differentialScale_(1 / std::sqrt(Float(std::max<int64_t>(1, settings.mutationsPerPixel)))) {
   }
 
@@ -53,7 +56,8 @@ class PathEvaluator {
     PathSample r;
     Point2f u = cameraStream.get2D();
     CameraSample cs;
-    cs.pFilm = Point2f(u.x * Float(resolution_.x), u.y * Float(resolution_.y));
+    cs.pFilm = Point2f(lerp(u.x, filmArea_.pMin.x, filmArea_.pMax.x),
+                       lerp(u.y, filmArea_.pMin.y, filmArea_.pMax.y));
     cs.time = cameraStream.get1D();
     cs.pLens = cameraStream.get2D();
     r.pRaster = cs.pFilm;
@@ -85,7 +89,13 @@ class PathEvaluator {
       ++ts.nonFinite;
       return r;
     }
-    if (elsewhere) r.pRaster = pElsewhere;
+    // A path through the film point carries the area film points are drawn from over the
+    // image's (Film's splat scale counts image pixels). Light reaching the lens (t = 1) does not
+    // depend on the film point, and lands in the image: it keeps its value.
+    if (elsewhere)
+      r.pRaster = pElsewhere;
+    else
+      L *= areaOverImage_;
     r.L = L;
     r.y = std::max(Float(0), L.y());
     return r;
@@ -96,7 +106,8 @@ class PathEvaluator {
   const BdptIntegrator& paths_;
   const Scene& scene_;
   const Camera& camera_;
-  Point2i resolution_;
+  Bounds2f filmArea_;
+  Float areaOverImage_;
   Float differentialScale_;
 };
 
@@ -117,7 +128,12 @@ RenderResult runMetropolisChains(const MetropolisSettings& settings, const BdptI
   auto start = std::chrono::steady_clock::now();
   const Point2i resolution = film.fullResolution();
   const int depths = settings.maxDepth + 1;
-  PathEvaluator evaluator(settings, paths, scene, camera, resolution);
+  // Film points are drawn over every pixel filter's support, beyond the image by the radius, so
+  // that the edge pixels gather splats from all sides as their own samples would (drawn over the
+  // image only, the corners of a 16 x 16 render with a Gaussian filter came out 8% dark).
+  const Bounds2f filmArea = film.filterSupportArea();
+  PathEvaluator evaluator(settings, paths, scene, camera, filmArea,
+                          double(resolution.x) * double(resolution.y));
   tbb::enumerable_thread_specific<ThreadState> threadStates;
   int threads = options.nThreads > 0 ? options.nThreads : tbb::info::default_concurrency();
   tbb::task_arena taskArena(threads);
@@ -144,7 +160,7 @@ RenderResult runMetropolisChains(const MetropolisSettings& settings, const BdptI
   const double b = settings.bootstrapSamples > 0 ? sum / double(settings.bootstrapSamples) : 0;
   if (stats) stats->b = b;
 
-  SplatBuffer& splats = film.enableSplats();
+  SplatBuffer& splats = film.enableSplats(filmArea);
   const int64_t nPixels = int64_t(resolution.x) * resolution.y;
   const int64_t totalMutations = settings.mutationsPerPixel * nPixels;
   // splatScale is then 1 / mutationsPerPixel.
