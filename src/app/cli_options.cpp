@@ -12,8 +12,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
       "Renders each WorldEnd of the scene to a scene-linear OpenEXR file with a PNG "
       "preview."};
   app.add_option("scene", o->sceneFiles, "Scene files, read in order ('-' or none: stdin)");
-  app.add_option("--nthreads", o->nThreads, "Worker threads (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+  // Bounded so that a typo cannot ask the system for a hundred thousand threads (which crashed).
+  app.add_option("--nthreads", o->nThreads, "Worker threads (default: all cores; at most 4096)")
+      ->check(CLI::Range(0, 4096));
   app.add_option("--tile-size", o->tileSize, "Tile side in pixels (does not change the image)")
       ->check(CLI::PositiveNumber);
   app.add_option("-o,--outfile", o->outfile, "Output EXR (default: the Film's filename)");

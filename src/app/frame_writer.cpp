@@ -1,9 +1,13 @@
 #include "app/frame_writer.h"
 
+#include <unistd.h>
+
+#include <cctype>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
 
+#include "core/error.h"
 #include "film/output/image_output.h"
 #include "film/tonemap/tone_map.h"
 
@@ -31,7 +35,12 @@ std::optional<std::array<Float, 9>> FrameWriter::workingSpaceMatrix() const {
   return m;
 }
 
-FrameWriter::~FrameWriter() = default;
+FrameWriter::~FrameWriter() {
+  for (const Staged& s : staged_) {
+    std::error_code ec;
+    fs::remove(s.file, ec);
+  }
+}
 
 namespace {
 std::string joinedSceneNames(const CliOptions& cli) {
@@ -53,19 +62,78 @@ fs::path framePath(fs::path p, int frameIndex) {
 }
 }  // namespace
 
-void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
-                        const RenderResult& result, int frameIndex, const ImageMetadata& extra,
-                        ExrOptions exr) const {
-  fs::path exrPath = cli_.outfile.empty() ? fs::path(film.filename()) : fs::path(cli_.outfile);
+std::string FrameWriter::exrPathOf(const std::string& filmFilename, int frameIndex,
+                                   const FileLoc* warnAt) const {
+  fs::path exrPath = cli_.outfile.empty() ? fs::path(filmFilename) : fs::path(cli_.outfile);
   if (exrPath.extension() != ".exr") {
     fs::path original = exrPath;
     exrPath.replace_extension(".exr");
-    if (!cli_.quiet)
-      std::fprintf(
-          stderr, "%s: warning: output is scene-linear OpenEXR; writing %s instead of %s\n",
-          desc.film.loc.str().c_str(), exrPath.string().c_str(), original.string().c_str());
+    if (warnAt && !cli_.quiet)
+      std::fprintf(stderr,
+                   "%s: warning: output is scene-linear OpenEXR; writing %s instead of %s\n",
+                   warnAt->str().c_str(), exrPath.string().c_str(), original.string().c_str());
   }
-  exrPath = framePath(exrPath, frameIndex);
+  return framePath(exrPath, frameIndex).string();
+}
+
+std::string FrameWriter::previewPathOf(const std::string& exrPath, int frameIndex) const {
+  if (cli_.preview == "none") return "";
+  return (cli_.preview.empty() ? fs::path(exrPath).replace_extension(".png")
+                               : framePath(cli_.preview, frameIndex))
+      .string();
+}
+
+void FrameWriter::checkOutputs(const std::string& filmFilename, int frameIndex,
+                               const std::vector<std::string>& inputs) const {
+  const std::string exrPath = exrPathOf(filmFilename, frameIndex, nullptr);
+  std::vector<std::string> outputs = {exrPath};
+  if (std::string preview = previewPathOf(exrPath, frameIndex); !preview.empty()) {
+    std::string ext = fs::path(preview).extension().string();
+    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".png" && ext != ".jpg" && ext != ".jpeg")
+      throw FileError(preview, "unsupported preview format '" + ext + "' (expected .png or .jpg)");
+    outputs.push_back(preview);
+  }
+  for (const std::string& out : outputs) {
+    const fs::path target(out);
+    if (target.filename().empty()) throw FileError(out, "not a file name");
+    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+      throw FileError(out, "cannot write image: directory '" + dir.string() + "' does not exist");
+    if (fs::is_directory(target, ec)) throw FileError(out, "cannot write image: is a directory");
+    for (const std::string& in : inputs)
+      if (fs::equivalent(target, fs::path(in), ec))
+        throw FileError(out, "refusing to overwrite '" + in + "', which the render reads");
+  }
+}
+
+std::string FrameWriter::stage(const std::string& target) {
+  const fs::path t(target);
+  // Built with += rather than "." + string: GCC 12 warns falsely (-Wrestrict) about the latter.
+  std::string name = ".";
+  name += t.stem().string();
+  name += ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(staged_.size());
+  name += t.extension().string();
+  std::string file = (t.parent_path() / name).string();
+  staged_.push_back({file, target});
+  return file;
+}
+
+void FrameWriter::commit() {
+  for (const Staged& s : staged_) {
+    std::error_code ec;
+    fs::rename(s.file, s.target, ec);
+    if (ec) throw FileError(s.target, "cannot rename '" + s.file + "' to it: " + ec.message());
+    if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", s.target.c_str());
+  }
+  staged_.clear();
+}
+
+void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
+                        const RenderResult& result, int frameIndex, const ImageMetadata& extra,
+                        ExrOptions exr) {
+  const std::string exrPath = exrPathOf(film.filename(), frameIndex, &desc.film.loc);
 
   ImageBuffer image = film.image();
   ImageMetadata meta;
@@ -87,32 +155,26 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   exr.colorSpace = workingSpace_;
   // Resolved through the config, so a custom config's scene-linear space still gets its primaries.
   exr.chromaticities = colorManagement_->chromaticities(exr.colorSpace);
-  writeExr(exrPath.string(), image, meta, exr);
-  if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", exrPath.string().c_str());
+  writeExr(stage(exrPath), image, meta, exr);
 
-  if (cli_.preview == "none") return;
-  fs::path previewPath = cli_.preview.empty() ? fs::path(exrPath).replace_extension(".png")
-                                              : framePath(cli_.preview, frameIndex);
+  const std::string previewPath = previewPathOf(exrPath, frameIndex);
+  if (previewPath.empty()) return;
   if (workingSpace_ != sceneLinear_) colorManagement_->convert(image, workingSpace_, sceneLinear_);
   // lrt's tone maps act on the preview only; the EXR above keeps the scene-linear data.
   const std::string toneMap = cli_.toneMap.empty() ? desc.toneMap.name : cli_.toneMap;
   if (!toneMap.empty()) applyToneMap(image, toneMap, desc.toneMap.params, desc.toneMap.loc);
-  writePreview(previewPath.string(), image, *colorManagement_, cli_.display, cli_.view);
-  if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", previewPath.string().c_str());
+  writePreview(stage(previewPath), image, *colorManagement_, cli_.display, cli_.view);
 }
 
 void FrameWriter::writeBeside(const Film& film, int frameIndex,
-                              const std::vector<NamedImage>& images, ExrOptions exr) const {
-  fs::path exrPath = cli_.outfile.empty() ? fs::path(film.filename()) : fs::path(cli_.outfile);
-  fs::path dir = framePath(exrPath, frameIndex).parent_path();
+                              const std::vector<NamedImage>& images, ExrOptions exr) {
+  fs::path dir = fs::path(exrPathOf(film.filename(), frameIndex, nullptr)).parent_path();
   exr.colorSpace = workingSpace_;
   exr.chromaticities = colorManagement_->chromaticities(exr.colorSpace);
   ImageMetadata meta;
   meta.strings.push_back({"Software", std::string("candela ") + CANDELA_VERSION});
   for (const NamedImage& named : images) {
-    fs::path path = dir / named.name;
-    writeExr(path.string(), named.image, meta, exr);
-    if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", path.string().c_str());
+    writeExr(stage((dir / named.name).string()), named.image, meta, exr);
   }
 }
 

@@ -64,8 +64,11 @@ ProgressiveResult renderProgressively(RenderJob& job, const CliOptions& cli,
   return pr;
 }
 
+// Files the render reads, which no output may overwrite.
+using InputFiles = std::vector<std::string>;
+
 void renderFrame(const SceneDescription& desc, const CliOptions& cli, const EmbreeDevice& device,
-                 const FrameWriter& writer, int frameIndex) {
+                 FrameWriter& writer, int frameIndex, InputFiles& inputs) {
   BuildOptions build;
   build.seed = cli.seed;
   build.sppOverride = cli.spp;
@@ -78,7 +81,8 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.materialModels.plasticCoat =
       cli.coatFresnel == "pbrt" ? CoatFresnel::ReversedAsPbrt : CoatFresnel::Exact;
   build.colorMatrix = writer.workingSpaceMatrix();
-  build.loadImage = [&writer](const std::string& path, const std::string& colorSpace) {
+  build.loadImage = [&writer, &inputs](const std::string& path, const std::string& colorSpace) {
+    inputs.push_back(path);
     const ColorManagement& cm = writer.colorManagement();
     std::string from = colorSpace;
     if (from == TextureFactory::kSrgbEncoded) from = defaultTextureColorSpace(true, cm);
@@ -101,6 +105,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
         " does not keep (its light is splatted or gathered from photons): give --reference, or "
         "--time-budget");
   if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
+  writer.checkOutputs(job.film->filename(), frameIndex, inputs);
 
   RenderOptions options;
   options.nThreads = cli.nThreads;
@@ -156,17 +161,27 @@ int main(int argc, char** argv) {
   try {
     EmbreeDevice device;
     FrameWriter writer(cli);
-    int frame = 0;
+    // Every file is parsed before any frame renders, so that an error anywhere in it stops the
+    // run before work is done (as pbrt-v4 does); frames are then rendered in order, and their
+    // images written only when all have succeeded.
+    std::vector<SceneDescription> frames;
     SceneBuilder builder(
-        [&](SceneDescription&& desc) { renderFrame(desc, cli, device, writer, frame++); },
+        [&](SceneDescription&& desc) { frames.push_back(std::move(desc)); },
         cli.quiet ? SceneBuilder::WarningCallback() : SceneBuilder::WarningCallback(printWarning));
     for (const std::string& file : cli.sceneFiles) parseFile(file, builder);
     builder.endOfInput(FileLoc{cli.sceneFiles.back(), 0, 0});
-    if (frame == 0) {
+    if (frames.empty()) {
       std::fprintf(stderr,
                    "candela: error: the scene has no WorldBegin/WorldEnd: nothing to render\n");
       return 1;
     }
+    InputFiles inputs;
+    for (const std::string& file : cli.sceneFiles)
+      if (file != "-") inputs.push_back(file);
+    if (!cli.reference.empty()) inputs.push_back(cli.reference);
+    for (size_t i = 0; i < frames.size(); ++i)
+      renderFrame(frames[i], cli, device, writer, int(i), inputs);
+    writer.commit();
   } catch (const std::bad_alloc&) {
     // The scene asked for more than the machine has (the factories refuse the sizes they can
     // foresee: films, subdivision levels).

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/animated_transform.h"
+#include "core/bounds.h"
 #include "core/interaction.h"
 #include "core/paramset.h"
 #include "core/spectrum.h"
@@ -30,6 +31,12 @@ class Camera {
   virtual const class CameraImportance* importance() const { return nullptr; }
   // The name the scene gave the camera ("perspective"), for such messages.
   virtual const char* kind() const = 0;
+  // Whether the clipping planes (hither, yon) leave out every point of `world` at both ends of
+  // the shutter: the image can only be empty, which deserves a warning.
+  virtual bool clipsAway(const Bounds3f& world) const {
+    (void)world;
+    return false;
+  }
 };
 
 // What sampleWi returns: a point on the lens seen from a reference point.

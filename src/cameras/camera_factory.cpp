@@ -24,7 +24,9 @@ void readShutterAndClipping(const ParamSet& params, const FileLoc& loc, Float* s
   // pbrt-v2 swaps a reversed shutter interval rather than rejecting it.
   if (*shutterClose < *shutterOpen) std::swap(*shutterOpen, *shutterClose);
 
-  *hither = params.getOneFloat("hither", 1e-3f);
+  // Rays start at the camera (hither 0) unless the scene asks for clipping, as in pbrt-v2 and
+  // pbrt-v3: the lrt draft's absolute default of 1e-3 clipped away a whole scene 1e-4 in size.
+  *hither = params.getOneFloat("hither", 0);
   *yon = params.getOneFloat("yon", 1e30f);
   if (!(*hither >= 0) || !(*yon > *hither))
     throw SceneError(params.locationOf("hither", loc),
@@ -128,12 +130,10 @@ RealisticCameraOptions realisticOptions(const ParamSet& params, const Point2i& r
   return o;
 }
 
-}  // namespace
-
-std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
-                                     const AnimatedTransform& cameraToWorld,
-                                     const Point2i& fullResolution, const FileLoc& loc,
-                                     Float filmDiagonal) {
+std::unique_ptr<Camera> createUncheckedCamera(const std::string& name, const ParamSet& params,
+                                              const AnimatedTransform& cameraToWorld,
+                                              const Point2i& fullResolution, const FileLoc& loc,
+                                              Float filmDiagonal) {
   if (fullResolution.x < 1 || fullResolution.y < 1)
     throw SceneError(loc, "camera: image resolution must be positive");
   if (name == "perspective")
@@ -157,6 +157,42 @@ std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& pa
   }
   throw SceneError(loc, "unknown camera \"" + name +
                             "\" (known: perspective, orthographic, environment, realistic)");
+}
+
+// Parameters and transforms that are each finite can still make rays that are not (a screen
+// window of +-1e38, a camera moved by 1e38 at the end of the shutter). Rays through the corners,
+// edge midpoints and centre of the film, at the shutter's open, middle and close, from the lens
+// centre, must be traceable.
+void checkRaysTraceable(const Camera& camera, const Point2i& resolution, const FileLoc& loc) {
+  // CameraSample::time is in [0, 1), mapped onto the shutter by the camera.
+  for (Float time : {Float(0), Float(0.5), kOneMinusEpsilon})
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i) {
+        CameraSample cs;
+        cs.pFilm = Point2f(Float(resolution.x) * Float(i) / 2, Float(resolution.y) * Float(j) / 2);
+        cs.pLens = Point2f(0.5f, 0.5f);
+        cs.time = time;
+        Ray ray;
+        if (camera.generateRay(cs, &ray) <= 0) continue;
+        if (!withinTraceableRange(ray.o, ray.d) || std::isnan(ray.tMax))
+          throw SceneError(loc, "camera \"" + std::string(camera.kind()) +
+                                    "\": its screen window and transforms make rays that start "
+                                    "or point beyond 1.8e18 or are not finite (ray at film (" +
+                                    str(cs.pFilm.x) + ", " + str(cs.pFilm.y) + "), time " +
+                                    str(time) + ")");
+      }
+}
+
+}  // namespace
+
+std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,
+                                     const AnimatedTransform& cameraToWorld,
+                                     const Point2i& fullResolution, const FileLoc& loc,
+                                     Float filmDiagonal) {
+  std::unique_ptr<Camera> camera =
+      createUncheckedCamera(name, params, cameraToWorld, fullResolution, loc, filmDiagonal);
+  checkRaysTraceable(*camera, fullResolution, loc);
+  return camera;
 }
 
 std::unique_ptr<Camera> createCamera(const std::string& name, const ParamSet& params,

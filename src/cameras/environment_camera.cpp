@@ -1,10 +1,33 @@
 #include "cameras/environment_camera.h"
 
+#include <algorithm>
+
 namespace candela {
 
 EnvironmentCamera::EnvironmentCamera(const AnimatedTransform& cameraToWorld,
                                      const EnvironmentCameraOptions& options)
     : cameraToWorld_(cameraToWorld), options_(options) {}
+
+bool EnvironmentCamera::clipsAway(const Bounds3f& world) const {
+  if (world.empty()) return false;
+  for (Float time : {options_.shutterOpen, options_.shutterClose}) {
+    Transform worldToCamera = inverse(cameraToWorld_.interpolate(time));
+    // The farthest point of a box is a corner; the nearest is bounded below by the distance to
+    // the camera-space box around the corners (so a warning is never given wrongly).
+    Bounds3f box;
+    Float farthest = 0;
+    for (int c = 0; c < 8; ++c) {
+      Point3f p = worldToCamera(world.corner(c));
+      box = unionOf(box, p);
+      farthest = std::max(farthest, Vector3f(p.x, p.y, p.z).length());
+    }
+    Vector3f nearest(std::max({box.pMin.x, Float(0), -box.pMax.x}),
+                     std::max({box.pMin.y, Float(0), -box.pMax.y}),
+                     std::max({box.pMin.z, Float(0), -box.pMax.z}));
+    if (!(farthest < options_.hither || nearest.length() > options_.yon)) return false;
+  }
+  return true;
+}
 
 Vector3f EnvironmentCamera::cameraDirection(const Point2f& pRaster) const {
   Float theta = kPi * pRaster.y / Float(options_.fullResolution.y);

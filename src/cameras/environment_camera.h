@@ -18,7 +18,7 @@ namespace candela {
 struct EnvironmentCameraOptions {
   Point2i fullResolution{640, 480};
   Float shutterOpen = 0, shutterClose = 1;
-  Float hither = 1e-3f, yon = 1e30f;
+  Float hither = 0, yon = 1e30f;
 };
 
 class EnvironmentCamera final : public Camera {
@@ -33,6 +33,8 @@ class EnvironmentCamera final : public Camera {
   const EnvironmentCameraOptions& options() const { return options_; }
   Float shutterOpen() const override { return options_.shutterOpen; }
   Float shutterClose() const override { return options_.shutterClose; }
+  // Clipping is by the spheres of radius hither and yon around the camera.
+  bool clipsAway(const Bounds3f& world) const override;
   const AnimatedTransform& cameraToWorld() const { return cameraToWorld_; }
   // The camera-space unit direction for a raster position (the formulas above).
   Vector3f cameraDirection(const Point2f& pRaster) const;

@@ -35,6 +35,23 @@ void ProjectiveCamera::transformsAt(Float time, Transform* cameraToWorld,
   *worldToCamera = cameraToWorld_.isAnimated() ? inverse(*cameraToWorld) : worldToCameraStill_;
 }
 
+bool ProjectiveCamera::clipsAway(const Bounds3f& world) const {
+  if (world.empty()) return false;
+  for (Float time : {options_.shutterOpen, options_.shutterClose}) {
+    Transform cameraToWorld, worldToCamera;
+    transformsAt(time, &cameraToWorld, &worldToCamera);
+    // The box is convex: its camera-space z range is that of its corners.
+    Float zMin = kInfinity, zMax = -kInfinity;
+    for (int c = 0; c < 8; ++c) {
+      Float z = worldToCamera(world.corner(c)).z;
+      zMin = std::min(zMin, z);
+      zMax = std::max(zMax, z);
+    }
+    if (!(zMax < options_.hither || zMin > options_.yon)) return false;
+  }
+  return true;
+}
+
 Point2f ProjectiveCamera::rasterToScreen(const Point2f& pRaster) const {
   const Bounds2f& sw = options_.screenWindow;
   Float xres = Float(options_.fullResolution.x), yres = Float(options_.fullResolution.y);

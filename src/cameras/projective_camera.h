@@ -19,7 +19,7 @@ struct ProjectiveCameraOptions {
   Float lensRadius = 0;
   Float focalDistance = 1e30f;
   Float shutterOpen = 0, shutterClose = 1;
-  Float hither = 1e-3f, yon = 1e30f;
+  Float hither = 0, yon = 1e30f;
 };
 
 // The default screen window for a frame aspect ratio (width / height): [-1, 1] along the shorter
@@ -37,6 +37,8 @@ class ProjectiveCamera : public Camera {
   const ProjectiveCameraOptions& projectiveOptions() const { return options_; }
   Float shutterOpen() const override { return options_.shutterOpen; }
   Float shutterClose() const override { return options_.shutterClose; }
+  // Clipping is by the planes z = hither and z = yon of camera space.
+  bool clipsAway(const Bounds3f& world) const override;
 
   // Screen space (lrt draft §6.1): raster (0, 0) is the screen window's top-left corner
   // (xmin, ymax), raster (xres, yres) its bottom-right corner (xmax, ymin).

@@ -17,6 +17,18 @@ struct Ray {
   bool hasNaN() const { return o.hasNaN() || d.hasNaN() || std::isnan(tMax); }
 };
 
+// Rays are traced only from and along points of at most 1.844e18 in every coordinate: Embree
+// asserts beyond that (its FLT_LARGE), finite or not. Rays outside the range miss everything, and
+// cameras that would make them are refused.
+constexpr Float kLargestTraceableCoordinate = 1.844e18f;
+inline bool withinTraceableRange(const Point3f& o, const Vector3f& d) {
+  for (int i = 0; i < 3; ++i)
+    if (!(std::abs(o[i]) <= kLargestTraceableCoordinate) ||
+        !(std::abs(d[i]) <= kLargestTraceableCoordinate))
+      return false;
+  return true;
+}
+
 // A camera ray plus two rays offset by one pixel in x and y, for texture filtering.
 struct RayDifferential : Ray {
   bool hasDifferentials = false;

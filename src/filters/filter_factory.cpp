@@ -28,10 +28,19 @@ Vector2f radiusParam(const ParamSet& params, Float def, const FileLoc& loc) {
                   positiveParam(params, "ywidth", def, loc));
 }
 
-}  // namespace
+// Parameters that are each finite can still make f overflow (mitchell with B = 1e38 and C = -1e38
+// gave a NaN in every pixel): the filter must have a finite, positive integral.
+std::unique_ptr<Filter> checked(std::unique_ptr<Filter> filter, const std::string& name,
+                                const FileLoc& loc) {
+  Float integral = filter->integral();
+  if (!std::isfinite(integral) || !(integral > 0))
+    throw SceneError(loc, name + " filter: these parameters make a filter whose integral is " +
+                              std::to_string(integral) + ", not a finite positive number");
+  return filter;
+}
 
-std::unique_ptr<Filter> createFilter(const std::string& name, const ParamSet& params,
-                                     const FileLoc& loc) {
+std::unique_ptr<Filter> createUncheckedFilter(const std::string& name, const ParamSet& params,
+                                              const FileLoc& loc) {
   if (name == "box") return std::make_unique<BoxFilter>(radiusParam(params, 0.5f, loc));
   if (name == "gaussian") {
     Vector2f radius = radiusParam(params, 2, loc);
@@ -51,6 +60,13 @@ std::unique_ptr<Filter> createFilter(const std::string& name, const ParamSet& pa
   }
   throw SceneError(loc, "unknown pixel filter \"" + name +
                             "\" (known: box, gaussian, mitchell, triangle, sinc)");
+}
+
+}  // namespace
+
+std::unique_ptr<Filter> createFilter(const std::string& name, const ParamSet& params,
+                                     const FileLoc& loc) {
+  return checked(createUncheckedFilter(name, params, loc), name, loc);
 }
 
 }  // namespace candela

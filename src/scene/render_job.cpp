@@ -339,6 +339,10 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   warnAboutNamedMedia(*job.namedMedia, integratorDesc, job.imageRenderer != nullptr, warn);
   job.scene->setMedia(std::move(sceneMedia));
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
+  if (warn && job.camera->clipsAway(job.scene->worldBound()))
+    warn(camDesc.loc,
+         "the camera's clipping range (\"hither\", \"yon\") leaves out every object: "
+         "the image can show only lights at infinity");
   PreprocessOptions pre;
   pre.seed = options.seed;
   pre.nThreads = options.nThreads;

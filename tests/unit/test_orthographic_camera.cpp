@@ -35,7 +35,7 @@ TEST(OrthographicCamera, EveryRayRunsAlongTheViewDirection) {
 TEST(OrthographicCamera, RasterMapsOntoTheScreenWindow) {
   // Default window for a 200 x 100 image: [-2, 2] x [-1, 1]; raster (0, 0) is its top-left
   // corner (xmin, ymax), raster (xres, yres) the bottom-right (xmax, ymin). The ray leaves from
-  // the screen point on the hither plane.
+  // the screen point (on the hither plane, z = 0 by default).
   auto cam = makeOrtho(ParamSet(), Transform(), {200, 100});
   struct Case {
     Point2f raster;
@@ -45,7 +45,7 @@ TEST(OrthographicCamera, RasterMapsOntoTheScreenWindow) {
                  Case{{150, 25}, {1, 0.5f}}, Case{{12.5f, 80}, {-1.75f, -0.6f}}}) {
     Ray r;
     cam->generateRay(test::cameraSample(c.raster.x, c.raster.y), &r);
-    test::expectNear(r.o, Point3f(c.screen.x, c.screen.y, 1e-3f), 1e-6f);
+    test::expectNear(r.o, Point3f(c.screen.x, c.screen.y, 0), 1e-6f);
     auto& ortho = dynamic_cast<OrthographicCamera&>(*cam);
     Point2f s = ortho.rasterToScreen(c.raster);
     EXPECT_NEAR(s.x, c.screen.x, 1e-6);
@@ -58,7 +58,7 @@ TEST(OrthographicCamera, RasterMapsOntoTheScreenWindow) {
   Ray r;
   cam->generateRay(test::cameraSample(10, 60),
                    &r);  // x: -3 + 8 * 10/40 = -1; y: 12 - 2 * 60/80 = 10.5
-  test::expectNear(r.o, Point3f(-1, 10.5f, 1e-3f), 1e-5f);
+  test::expectNear(r.o, Point3f(-1, 10.5f, 0), 1e-5f);
 }
 
 TEST(OrthographicCamera, ClippingPlanesAndShutter) {

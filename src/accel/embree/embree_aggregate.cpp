@@ -20,7 +20,7 @@ bool isFinite(const Vector3f& v) {
 
 // Rays Embree must never see: its traversal assumes finite origins and directions.
 bool isTraceable(const Ray& ray) {
-  return isFinite(ray.o) && isFinite(ray.d) && ray.d != Vector3f() && ray.tMax > 0;
+  return withinTraceableRange(ray.o, ray.d) && ray.d != Vector3f() && ray.tMax > 0;
 }
 
 RTCBuildQuality embreeQuality(int q) {

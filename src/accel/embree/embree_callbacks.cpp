@@ -65,6 +65,7 @@ bool toPrototype(RTCRayN* rays, unsigned N, unsigned i, const AnimatedTransform&
   Transform toLocal = inverse(*toWorld);
   Point3f o = toLocal(world.o);
   Vector3f d = toLocal(world.d);
+  if (!withinTraceableRange(o, d)) return false;
   out->org_x = o.x;
   out->org_y = o.y;
   out->org_z = o.z;

@@ -44,9 +44,11 @@ GridAggregate::GridAggregate(const SceneGeometry& geometry)
 
 int GridAggregate::posToVoxel(Float p, int axis) const {
   Float v = (p - bounds_.pMin[axis]) * invWidth_[axis];
-  // Clamped in float first: a far-off point must not overflow the int conversion.
-  v = clamp(v, Float(0), Float(n_[axis] - 1));
-  return int(v);
+  // Clamped in float first: a far-off point must not overflow the int conversion. A grid whose
+  // extent overflows float (vertices at +-3.4e38) has an infinite width and 1/width = 0, and
+  // inf * 0 is a NaN: voxel 0 then, not the undefined int(NaN) (which crashed).
+  if (!(v > 0)) return 0;
+  return int(std::min(v, Float(n_[axis] - 1)));
 }
 
 void GridAggregate::build() {
