@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "materials/fourier.h"
 #include "materials/glass.h"
 #include "materials/lafortune_material.h"
 #include "materials/matte.h"
@@ -26,8 +27,9 @@ namespace candela {
 namespace {
 
 const std::vector<std::string> kMaterialNames = {
-    "matte",     "plastic", "translucent", "glass",    "mirror", "metal",      "shinymetal",
-    "substrate", "uber",    "mix",         "measured", "clay",   "subsurface", "kdsubsurface"};
+    "matte",    "plastic",    "translucent", "glass",        "mirror",
+    "metal",    "shinymetal", "substrate",   "uber",         "mix",
+    "measured", "clay",       "subsurface",  "kdsubsurface", "fourier"};
 // Named in the draft (§10.9) without coefficients.
 const std::set<std::string> kUnprintedFits = {"felt", "primer", "skin", "bluepaint",
                                               "brushedmetal"};
@@ -211,6 +213,24 @@ std::unique_ptr<Material> MaterialFactory::measured(const MaterialDesc& d,
   }
 }
 
+std::unique_ptr<Material> MaterialFactory::fourier(const MaterialDesc& d,
+                                                   const Texture<Float>* bump) {
+  std::string filename = d.params.getOneString("bsdffile", "");
+  FileLoc loc = d.params.locationOf("bsdffile", d.loc);
+  if (filename.empty()) throw SceneError(loc, "fourier needs \"string bsdffile\"");
+  std::string path = resolveScenePath(filename, loc.file);
+  if (auto it = fourier_.find(path); it != fourier_.end())
+    return std::make_unique<FourierMaterial>(it->second, bump);
+  try {
+    ++tablesLoaded_;
+    auto t = std::make_shared<const FourierBsdfTable>(readFourierBsdf(path));
+    fourier_[path] = t;
+    return std::make_unique<FourierMaterial>(t, bump);
+  } catch (const FileError& e) {
+    throw SceneError(loc, e.what());
+  }
+}
+
 std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
   const ParamSet& p = d.params;
   const FileLoc& loc = d.loc;
@@ -254,6 +274,7 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
                                spec("opacity", 1), flt("roughness", 0.1f), flt("index", 1.5f)},
         bump);
   if (d.name == "measured") return measured(d, bump);
+  if (d.name == "fourier") return fourier(d, bump);
   // The dipole's translucent materials (pbrt 2e §16.5): subsurface_material_params.h.
   if (d.name == "subsurface" || d.name == "kdsubsurface")
     return createSubsurfaceMaterial(d, textures_, bump);

@@ -6,7 +6,7 @@
 //   (Kr .9), metal (eta, k: copper; roughness .01), shinymetal (Ks 1, Kr 1, roughness .1),
 //   substrate (Kd .5, Ks .5, uroughness .1, vroughness .1), uber (Kd .25, Ks .25, Kr 0,
 //   roughness .1, opacity 1, index 1.5), mix (amount .5, namedmaterial1, namedmaterial2),
-//   measured (filename), and lrt's Lafortune fit "clay".
+//   measured (filename), pbrt-v3's fourier (bsdffile), and lrt's Lafortune fit "clay".
 // In a pbrt-v3 scene (scene/scene_dialect.h) metal, plastic, substrate, uber, translucent and
 // glass are pbrt-v3's instead: Trowbridge-Reitz microfacets with Smith masking and the parameters
 // "remaproughness" (true), metal's and uber's "uroughness"/"vroughness" (default: roughness),
@@ -17,8 +17,8 @@
 //
 // mix resolves its names through the MakeNamedMaterial definitions in effect at its statement
 // (MaterialDesc::namedMaterials; pbrt-v3 scopes them by AttributeBegin/End); a mix that reaches
-// itself is an error. measured files are read once per path (relative to the scene file
-// naming them).
+// itself is an error. measured and fourier files are read once per path (relative to the scene
+// file naming them).
 #pragma once
 
 #include <functional>
@@ -30,6 +30,7 @@
 
 #include "materials/material.h"
 #include "materials/plastic.h"
+#include "reflection/fourier_bsdf_table.h"
 #include "reflection/irregular_brdf.h"
 #include "reflection/merl_brdf.h"
 #include "scene/scene_description.h"
@@ -62,13 +63,14 @@ class MaterialFactory {
   // Throws SceneError for unknown names, bad parameters or files, and mix cycles.
   const Material* get(int index);
 
-  int tablesLoaded() const { return tablesLoaded_; }  // measured files read
+  int tablesLoaded() const { return tablesLoaded_; }  // measured and fourier files read
 
  private:
   std::unique_ptr<Material> create(const MaterialDesc& d);
   const Material* named(const MaterialDesc& d, const std::string& param);
   const Texture<Float>* bumpMap(const MaterialDesc& d);
   std::unique_ptr<Material> measured(const MaterialDesc& d, const Texture<Float>* bump);
+  std::unique_ptr<Material> fourier(const MaterialDesc& d, const Texture<Float>* bump);
   bool usesPbrtV3Models(const MaterialDesc& d) const;
   // pbrt-v3's version of a microfacet material, or null for other names.
   std::unique_ptr<Material> createPbrtV3(const MaterialDesc& d, const Texture<Float>* bump);
@@ -83,6 +85,7 @@ class MaterialFactory {
   std::set<int> inProgress_;  // mix recursion guard
   std::map<std::string, std::shared_ptr<const MerlBrdfTable>> merl_;
   std::map<std::string, std::shared_ptr<const IrregularBrdfTable>> irregular_;
+  std::map<std::string, std::shared_ptr<const FourierBsdfTable>> fourier_;
   std::vector<std::unique_ptr<Texture<Float>>> bumpTextures_;  // from BumpMap statements
   int tablesLoaded_ = 0;
 };
