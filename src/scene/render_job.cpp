@@ -92,10 +92,13 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* n
               const BuildOptions& options) {
   const MediumInterface* mediumInterface = job.namedMedia->interfaceOf(sd);
   const WarningSink& warn = options.warn;
+  bool allowAreaLight = noAreaLight == nullptr;
   CreatedShapes created = createShapes(sd, objectToWorld, *job.textures, options.subdiv);
   reportUnused(sd, warn);
+  // pbrt 3e cannot sample points on curves either (its Curve::Sample is unimplemented).
+  if (sd.name == "curve" && sd.areaLight && allowAreaLight)
+    throw SceneError(sd.loc, "curves cannot be area lights (no AreaLightSource on a curve)");
   const Material* material = materials.get(sd.material);
-  bool allowAreaLight = noAreaLight == nullptr;
   if (created.mesh) {
     job.meshes.push_back(std::move(created.mesh));
     ++job.stats.triangleMeshes;

@@ -5,6 +5,7 @@
 #include "scene/plugin_factories.h"
 #include "scene/texture_factory.h"
 #include "shapes/cone.h"
+#include "shapes/curve_shape.h"
 #include "shapes/cylinder.h"
 #include "shapes/disk.h"
 #include "shapes/heightfield.h"
@@ -89,6 +90,8 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
   } else if (desc.name == "nurbs") {
     out.shapes =
         createNurbsShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh, desc.loc);
+  } else if (desc.name == "curve") {
+    out.shapes = createCurveShapes(objectToWorld, desc.reverseOrientation, desc.params, desc.loc);
   } else if (desc.name == "plymesh") {
     std::string dir = std::filesystem::path(desc.loc.file).parent_path().string();
     out.shapes = createPlyMeshShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh,
@@ -96,7 +99,7 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
   } else {
     throwUnknownPlugin(desc.loc, "shape", desc.name,
                        {"sphere", "cylinder", "disk", "cone", "paraboloid", "hyperboloid",
-                        "heightfield", "trianglemesh", "plymesh", "loopsubdiv", "nurbs"});
+                        "heightfield", "trianglemesh", "plymesh", "loopsubdiv", "nurbs", "curve"});
   }
   return out;
 }

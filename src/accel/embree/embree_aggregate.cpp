@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "accel/embree/embree_curves.h"
 #include "accel/embree/embree_geometry.h"
 #include "accel/embree/embree_triangle_filters.h"
 #include "core/interaction_transform.h"
@@ -22,6 +23,8 @@ bool isFinite(const Vector3f& v) {
 bool isTraceable(const Ray& ray) {
   return withinTraceableRange(ray.o, ray.d) && ray.d != Vector3f() && ray.tMax > 0;
 }
+
+Vector3f hitNormal(const RTCHit& h) { return Vector3f(h.Ng_x, h.Ng_y, h.Ng_z); }
 
 RTCBuildQuality embreeQuality(int q) {
   return q == int(EmbreeAggregate::BuildQuality::High) ? RTC_BUILD_QUALITY_HIGH
@@ -90,6 +93,25 @@ void EmbreeAggregate::addPrimitives(const Primitive* primitives, size_t n) {
   userPrims->primitives = primitives;
   for (size_t i = 0; i < n;) {
     const Shape* shape = primitives[i].shape;
+    if (const auto* curve = dynamic_cast<const CurveShape*>(shape)) {
+      // The run of consecutive curve pieces of one type: one native curve geometry.
+      CurveType type = curve->piece().type;
+      auto info = std::make_unique<EmbreeGeometry>();
+      info->kind = EmbreeGeometry::Kind::Curves;
+      info->primitives = primitives;
+      for (; i < n; ++i) {
+        const auto* c = dynamic_cast<const CurveShape*>(primitives[i].shape);
+        if (!c || c->piece().type != type) break;
+        info->primIndex.push_back(uint32_t(i));
+      }
+      RTCGeometry g = newCurveGeometry(dev, type, primitives, info->primIndex);
+      device_->check("creating an Embree curve geometry");
+      if (!g) throw EmbreeError("Embree: could not create a curve geometry");
+      curves_ += long(info->primIndex.size());
+      ++curveGeometries_;
+      attach(g, std::move(info));
+      continue;
+    }
     int tri = 0;
     const TriangleMesh* mesh = shape ? shape->triangleMesh(&tri) : nullptr;
     if (!mesh || !dynamic_cast<const TriangleShape*>(shape)) {
@@ -189,10 +211,15 @@ void EmbreeAggregate::addInstances(const SceneGeometry& geometry) {
 }
 
 bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned primID, float u, float v,
-                                    float t, const Ray& ray, const Ray& shapeRay,
-                                    SurfaceInteraction* isect) const {
+                                    const Vector3f& ng, float t, const Ray& ray,
+                                    const Ray& shapeRay, SurfaceInteraction* isect) const {
   const Primitive& prim = g.primitive(primID);
-  if (g.kind == EmbreeGeometry::Kind::Shapes) {
+  if (g.kind == EmbreeGeometry::Kind::Curves) {
+    // Embree's u runs along the piece; its v and, for flat curves, Ng (the tangent there) are
+    // of no use: the curve computes v and the normal itself.
+    const auto* curve = static_cast<const CurveShape*>(prim.shape);
+    *isect = curve->interactionAt(ray, u, t, ng);
+  } else if (g.kind == EmbreeGeometry::Kind::Shapes) {
     // The shape's own intersection again, on the very ray its callback accepted the hit on,
     // limited to just past the hit: it is deterministic, so it finds the same t, now with the
     // full interaction.
@@ -224,20 +251,24 @@ bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const
     // found in the prototype's space and carried to world space (lrt draft §4.1.2).
     const EmbreeGeometry& inst = *geometries_[rh.hit.instID[0]];
     const EmbreeAggregate& proto = *inst.prototype;
+    // The ray as Embree took it into the prototype (the same t means the same point).
+    Transform toLocal = inverse(*inst.instanceToWorld);
+    Ray local(toLocal(ray.o), toLocal(ray.d), ray.tMax, ray.time);
     if (!proto.interactionAt(*proto.geometries_[rh.hit.geomID], rh.hit.primID, rh.hit.u, rh.hit.v,
-                             t, ray, context.shapeRay, isect))
+                             hitNormal(rh.hit), t, local, context.shapeRay, isect))
       return false;
     *isect = transformSurfaceInteraction(*inst.instanceToWorld, *isect, ray.d);
   } else if (const EmbreeGeometry& g = *geometries_[rh.hit.geomID];
              g.kind == EmbreeGeometry::Kind::MotionInstances) {
     const PrototypeHit& h = context.motionHit;
     const EmbreeAggregate& proto = *g.motion[rh.hit.primID].prototype;
-    if (!proto.interactionAt(*proto.geometries_[h.geomID], h.primID, h.u, h.v, t, ray, h.shapeRay,
-                             isect))
+    if (!proto.interactionAt(*proto.geometries_[h.geomID], h.primID, h.u, h.v, h.ng, t, h.localRay,
+                             h.shapeRay, isect))
       return false;
     *isect = transformSurfaceInteraction(h.instanceToWorld, *isect, ray.d);
   } else {
-    if (!interactionAt(g, rh.hit.primID, rh.hit.u, rh.hit.v, t, ray, context.shapeRay, isect))
+    if (!interactionAt(g, rh.hit.primID, rh.hit.u, rh.hit.v, hitNormal(rh.hit), t, ray,
+                       context.shapeRay, isect))
       return false;
   }
   ray.tMax = t;
@@ -260,6 +291,10 @@ AggregateStats EmbreeAggregate::stats() const {
   s.counts["embree user geometries"] = userGeometries_;
   s.counts["triangles"] = triangles_;
   s.counts["user primitives"] = userPrimitives_;
+  if (curves_ > 0) {
+    s.counts["embree curve geometries"] = curveGeometries_;
+    s.counts["curves"] = curves_;
+  }
   if (instances_ > 0) {
     long protoTriangles = 0, protoUser = 0;
     for (const auto& p : prototypes_) {

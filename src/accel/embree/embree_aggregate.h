@@ -1,6 +1,7 @@
 // The Aggregate on Embree (DESIGN.md, "Intersection is Embree's"). Runs of consecutive triangles
-// of one mesh become one native Embree triangle geometry; every other shape (the quadrics) is a
-// primitive of one Embree user geometry whose callbacks call the shape's own intersection.
+// of one mesh become one native Embree triangle geometry, runs of curve pieces of one type one
+// native Embree curve geometry; every other shape (the quadrics) is a primitive of one Embree
+// user geometry whose callbacks call the shape's own intersection.
 // Object instances (ObjectBegin/ObjectInstance, lrt draft §4.1.2) share one child scene per
 // prototype: a static instance is an Embree instance geometry of it, so memory does not grow
 // with the number of instances; instances with animated transforms are primitives of a user
@@ -48,10 +49,10 @@ class EmbreeAggregate : public Aggregate {
   bool intersect(const Ray& ray, SurfaceInteraction* isect) const override;
   bool intersectP(const Ray& ray) const override;
   // counts: "embree triangle geometries", "embree user geometries", "triangles",
-  // "user primitives" (of this scene, prototypes not included); with instances also
-  // "instances", "prototypes", "embree instance geometries" (static instances),
-  // "embree motion user geometries", "motion instances", "prototype triangles",
-  // "prototype user primitives".
+  // "user primitives", and with curves "embree curve geometries", "curves" (of this scene,
+  // prototypes not included); with instances also "instances", "prototypes", "embree instance
+  // geometries" (static instances), "embree motion user geometries", "motion instances", "prototype
+  // triangles", "prototype user primitives".
   AggregateStats stats() const override;
 
  private:
@@ -60,12 +61,11 @@ class EmbreeAggregate : public Aggregate {
   void addPrimitives(const Primitive* primitives, size_t count);
   void addInstances(const SceneGeometry& geometry);
   unsigned attach(RTCGeometryTy* g, std::unique_ptr<EmbreeGeometry> info);
-  // The interaction (in this aggregate's space) of the hit (primID, u, v) on geometry g of this
-  // scene at ray parameter t. ray is the query's ray in this space (only its time and
-  // direction are used, for triangles); shapeRay is the ray the Shapes callback accepted the
-  // hit on (QueryContext::shapeRay).
-  bool interactionAt(const EmbreeGeometry& g, unsigned primID, float u, float v, float t,
-                     const Ray& ray, const Ray& shapeRay, SurfaceInteraction* isect) const;
+  // The interaction (in this aggregate's space) of the hit (primID, u, v, geometric normal ng)
+  // on geometry g of this scene at ray parameter t. ray is the query's ray in this space;
+  // shapeRay is the ray the Shapes callback accepted the hit on (QueryContext::shapeRay).
+  bool interactionAt(const EmbreeGeometry& g, unsigned primID, float u, float v, const Vector3f& ng,
+                     float t, const Ray& ray, const Ray& shapeRay, SurfaceInteraction* isect) const;
 
   const EmbreeDevice* device_;
   RTCSceneTy* scene_ = nullptr;
@@ -74,6 +74,7 @@ class EmbreeAggregate : public Aggregate {
   std::vector<std::unique_ptr<EmbreeAggregate>> prototypes_;
   Bounds3f bounds_;
   long triangleGeometries_ = 0, userGeometries_ = 0, triangles_ = 0, userPrimitives_ = 0;
+  long curveGeometries_ = 0, curves_ = 0;
   long instances_ = 0, instanceGeometries_ = 0, motionGeometries_ = 0, motionInstances_ = 0;
 };
 

@@ -154,6 +154,9 @@ void motionIntersect(const RTCIntersectFunctionNArguments* args) {
     note.primID = rh.hit.primID;
     note.u = rh.hit.u;
     note.v = rh.hit.v;
+    note.ng = Vector3f(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    note.localRay = Ray(Point3f(rh.ray.org_x, rh.ray.org_y, rh.ray.org_z),
+                        Vector3f(rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z), kInfinity, rh.ray.time);
     note.shapeRay = inner.shapeRay;
     note.instanceToWorld = toWorld;
   }

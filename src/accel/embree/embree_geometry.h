@@ -24,6 +24,7 @@ struct EmbreeGeometry {
   enum class Kind : uint8_t {
     Triangles,       // native triangles of one mesh: primID -> primitives[primIndex[primID]]
     Shapes,          // user geometry of quadrics etc., likewise through primIndex
+    Curves,          // native curves of CurveShapes of one type, likewise through primIndex
     Instance,        // a static instance of a prototype's scene (RTC_GEOMETRY_TYPE_INSTANCE)
     MotionInstances  // user geometry: primID -> motion[primID], an animated instance
   };
@@ -37,8 +38,8 @@ struct EmbreeGeometry {
   };
 
   Kind kind = Kind::Triangles;
-  const Primitive* primitives = nullptr;       // Triangles, Shapes: the aggregate's primitives
-  std::vector<uint32_t> primIndex;             // Triangles, Shapes
+  const Primitive* primitives = nullptr;       // Triangles, Shapes, Curves: the primitives
+  std::vector<uint32_t> primIndex;             // Triangles, Shapes, Curves
   const EmbreeAggregate* prototype = nullptr;  // Instance
   const Transform* instanceToWorld = nullptr;  // Instance; owned by the SceneGeometry
   std::vector<Motion> motion;                  // MotionInstances
@@ -52,6 +53,8 @@ struct EmbreeGeometry {
 struct PrototypeHit {
   unsigned geomID = RTC_INVALID_GEOMETRY_ID, primID = RTC_INVALID_GEOMETRY_ID;
   float u = 0, v = 0;
+  Vector3f ng;   // Embree's geometric normal, in the prototype's space
+  Ray localRay;  // the query's ray in the prototype's space
   Ray shapeRay;  // the prototype query's own QueryContext::shapeRay
   Transform instanceToWorld;
 };
