@@ -16,6 +16,7 @@
 #include "materials/substrate.h"
 #include "materials/translucent.h"
 #include "materials/uber.h"
+#include "scene/disney_material_params.h"
 #include "scene/plugin_factories.h"
 #include "scene/scene_path.h"
 #include "scene/spectrum_input.h"
@@ -29,7 +30,7 @@ namespace {
 const std::vector<std::string> kMaterialNames = {
     "matte",    "plastic",    "translucent", "glass",        "mirror",
     "metal",    "shinymetal", "substrate",   "uber",         "mix",
-    "measured", "clay",       "subsurface",  "kdsubsurface", "fourier"};
+    "measured", "clay",       "subsurface",  "kdsubsurface", "fourier", "disney"};
 // Named in the draft (§10.9) without coefficients.
 const std::set<std::string> kUnprintedFits = {"felt", "primer", "skin", "bluepaint",
                                               "brushedmetal"};
@@ -49,11 +50,12 @@ class ScaledFloatTexture : public Texture<Float> {
 
 MaterialFactory::MaterialFactory(const SceneDescription& desc, TextureFactory& textures,
                                  std::vector<std::unique_ptr<Material>>* owned, Used used,
-                                 MaterialModelOptions models)
+                                 MaterialModelOptions models, Warn warn)
     : desc_(desc),
       textures_(textures),
       owned_(owned),
       used_(std::move(used)),
+      warn_(std::move(warn)),
       models_(models),
       sceneDialect_(models.dialect.value_or(detectSceneDialect(desc))) {}
 
@@ -244,6 +246,8 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
     return std::make_unique<MixMaterial>(m1, m2, spec("amount", 0.5f));
   }
   const Texture<Float>* bump = bumpMap(d);
+  // pbrt-v3's only; no other dialect has a material of that name.
+  if (d.name == "disney") return createDisneyMaterial(d, textures_, bump, warn_);
   if (usesPbrtV3Models(d))
     if (auto m = createPbrtV3(d, bump)) return m;
   if (d.name == "matte")

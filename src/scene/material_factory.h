@@ -6,7 +6,8 @@
 //   (Kr .9), metal (eta, k: copper; roughness .01), shinymetal (Ks 1, Kr 1, roughness .1),
 //   substrate (Kd .5, Ks .5, uroughness .1, vroughness .1), uber (Kd .25, Ks .25, Kr 0,
 //   roughness .1, opacity 1, index 1.5), mix (amount .5, namedmaterial1, namedmaterial2),
-//   measured (filename), pbrt-v3's fourier (bsdffile), and lrt's Lafortune fit "clay".
+//   measured (filename), pbrt-v3's fourier (bsdffile), and lrt's Lafortune fit "clay"; in every
+//   dialect pbrt-v3's "disney" (scene/disney_material_params.h).
 // In a pbrt-v3 scene (scene/scene_dialect.h) metal, plastic, substrate, uber, translucent and
 // glass are pbrt-v3's instead: Trowbridge-Reitz microfacets with Smith masking and the parameters
 // "remaproughness" (true), metal's and uber's "uroughness"/"vroughness" (default: roughness),
@@ -49,12 +50,14 @@ class MaterialFactory {
  public:
   // Called once for each description a material was made from (for unused-parameter reports).
   using Used = std::function<void(const PluginDesc&)>;
+  // Receives warnings about parameters a material cannot honour, at their location.
+  using Warn = std::function<void(const FileLoc&, const std::string&)>;
 
   // Materials are appended to *owned; the factory owns textures of BumpMap statements and must
   // live as long as the materials (the render job owns both).
   MaterialFactory(const SceneDescription& desc, TextureFactory& textures,
                   std::vector<std::unique_ptr<Material>>* owned, Used used = {},
-                  MaterialModelOptions models = {});
+                  MaterialModelOptions models = {}, Warn warn = {});
   ~MaterialFactory();
   MaterialFactory(const MaterialFactory&) = delete;
   MaterialFactory& operator=(const MaterialFactory&) = delete;
@@ -79,6 +82,7 @@ class MaterialFactory {
   TextureFactory& textures_;
   std::vector<std::unique_ptr<Material>>* owned_;
   Used used_;
+  Warn warn_;
   MaterialModelOptions models_;
   SceneDialect sceneDialect_;
   std::map<int, const Material*> byIndex_;

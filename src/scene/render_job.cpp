@@ -76,7 +76,7 @@ class MaterialCache {
                 const MaterialModelOptions& models) {
     auto used = [warn](const PluginDesc& d) { reportUnused(d, warn); };
     job.materialFactory =
-        std::make_unique<MaterialFactory>(desc, *job.textures, &job.materials, used, models);
+        std::make_unique<MaterialFactory>(desc, *job.textures, &job.materials, used, models, warn);
     factory_ = job.materialFactory.get();
   }
   const Material* get(int index) { return factory_->get(index); }

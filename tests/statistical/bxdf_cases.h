@@ -12,6 +12,9 @@
 #include "core/memory.h"
 #include "reflection/brdf_to_btdf.h"
 #include "reflection/bsdf.h"
+#include "reflection/disney_clearcoat.h"
+#include "reflection/disney_diffuse.h"
+#include "reflection/disney_fresnel.h"
 #include "reflection/fresnel_blend.h"
 #include "reflection/irregular_brdf.h"
 #include "reflection/lafortune.h"
@@ -20,6 +23,7 @@
 #include "reflection/oren_nayar.h"
 #include "reflection/specular.h"
 #include "reflection/trowbridge_reitz_bxdfs.h"
+#include "support/disney_material.h"
 
 namespace candela::testcases {
 
@@ -194,6 +198,26 @@ inline std::vector<BxDFCase> sampledCases(bool full) {
       return a.make<TrowbridgeReitzFresnelBlend>(Spectrum(0.5f), Spectrum(0.2f),
                                                  a.make<TrowbridgeReitzDistribution>(0.1f, 0.4f));
     });
+    // The Disney lobes (materials/disney.h): the diffuse family is cosine-sampled, the clearcoat
+    // through GTR1, the specular lobe is Trowbridge-Reitz reflection with the Disney Fresnel.
+    add("DisneyDiffuse_30", direction(30, 10),
+        [](MemoryArena& a) { return a.make<DisneyDiffuse>(Spectrum(0.8f)); });
+    add("DisneyRetro_r1_80", direction(80, 20),
+        [](MemoryArena& a) { return a.make<DisneyRetroReflection>(Spectrum(0.8f), 1.f); });
+    add("DisneyFakeSubsurface_r0p5_below_100", direction(100, 30),
+        [](MemoryArena& a) { return a.make<DisneyFakeSubsurface>(Spectrum(0.8f), 0.5f); });
+    add("DisneySheen_60", direction(60, 40),
+        [](MemoryArena& a) { return a.make<DisneySheen>(Spectrum(1)); });
+    add("DisneyClearcoat_gloss1_30", direction(30, 50),
+        [](MemoryArena& a) { return a.make<DisneyClearcoat>(1.f, 1.f); });
+    add("DisneyClearcoat_gloss0_85", direction(85, 60),
+        [](MemoryArena& a) { return a.make<DisneyClearcoat>(1.f, 0.f); });
+    add("DisneyClearcoat_gloss0p5_below_140", direction(140, 70),
+        [](MemoryArena& a) { return a.make<DisneyClearcoat>(1.f, 0.5f); });
+    add("DisneySpecular_metallic0p5_0p2_0p4_45", direction(45, 80), [](MemoryArena& a) {
+      return trReflection(a, 0.2f, 0.4f,
+                          a.make<DisneyFresnel>(Spectrum(0.9f, 0.6f, 0.3f), 0.5f, 1.5f));
+    });
     return cases;
   }
   // The sweep: incident angles from the normal to 89.9 degrees, above and (for the microfacet
@@ -253,9 +277,73 @@ inline std::vector<BxDFCase> sampledCases(bool full) {
 struct BSDFCase {
   std::string name;
   std::shared_ptr<MemoryArena> arena;
+  std::shared_ptr<const test::DisneyFixture> material;  // when the BSDF is a material's
   const BSDF* bsdf = nullptr;
   Vector3f wo;
 };
+
+// Whole "disney" materials: parameter sets covering every lobe, with an incident direction each.
+struct DisneyCase {
+  std::string name;
+  test::DisneyParams params;
+  double thetaDeg, phiDeg;
+};
+inline std::vector<DisneyCase> disneyCases() {
+  std::vector<DisneyCase> cases;
+  auto add = [&](std::string name, double theta, double phi,
+                 const std::function<void(test::DisneyParams&)>& set) {
+    test::DisneyParams p;
+    set(p);
+    cases.push_back({std::move(name), p, theta, phi});
+  };
+  add("defaults_40", 40, 20, [](test::DisneyParams&) {});
+  add("anisotropic_60", 60, 70, [](test::DisneyParams& p) {
+    p.anisotropic = 0.9f;
+    p.roughness = 0.3f;
+    p.specularTint = 1;
+    p.color = Spectrum(0.8f, 0.3f, 0.1f);
+  });
+  add("metallic_20", 20, 10, [](test::DisneyParams& p) {
+    p.metallic = 1;
+    p.roughness = 0.2f;
+    p.color = Spectrum(0.9f, 0.7f, 0.3f);
+  });
+  add("half_metallic_sheen_80", 80, 45, [](test::DisneyParams& p) {
+    p.metallic = 0.5f;
+    p.sheen = 1;
+    p.sheenTint = 0.3f;
+    p.roughness = 0.7f;
+  });
+  add("clearcoat_30", 30, 100, [](test::DisneyParams& p) {
+    p.clearcoat = 1;
+    p.clearcoatGloss = 0.6f;
+    p.roughness = 0.4f;
+  });
+  add("thin_transmission_50", 50, 130, [](test::DisneyParams& p) {
+    p.thin = true;
+    p.specTrans = 0.6f;
+    p.flatness = 0.5f;
+    p.diffTrans = 1.2f;
+    p.roughness = 0.5f;
+  });
+  add("thin_transmission_below_150", 150, 200, [](test::DisneyParams& p) {
+    p.thin = true;
+    p.specTrans = 0.3f;
+    p.flatness = 1;
+    p.roughness = 0.8f;
+  });
+  add("glass_35", 35, 250, [](test::DisneyParams& p) {
+    p.specTrans = 1;
+    p.roughness = 0.3f;
+    p.color = Spectrum(0.9f);
+  });
+  add("glass_inside_160", 160, 300, [](test::DisneyParams& p) {
+    p.specTrans = 0.8f;
+    p.roughness = 0.5f;
+    p.eta = 1.33f;
+  });
+  return cases;
+}
 
 inline std::vector<BSDFCase> bsdfCases() {
   std::vector<BSDFCase> cases;
@@ -297,6 +385,15 @@ inline std::vector<BSDFCase> bsdfCases() {
           a.make<TrowbridgeReitzReflection>(Spectrum(1), a.make<FresnelDielectric>(1.f, 1.5f), d));
       b->add(a.make<TrowbridgeReitzTransmission>(Spectrum(1), d, 1.f, 1.5f));
     });
+  for (const DisneyCase& d : disneyCases()) {
+    BSDFCase c;
+    c.name = "Disney_" + d.name;
+    c.arena = std::make_shared<MemoryArena>();
+    c.material = std::make_shared<test::DisneyFixture>(d.params);
+    c.bsdf = c.material->bsdf(*c.arena);
+    c.wo = c.bsdf->localToWorld(direction(d.thetaDeg, d.phiDeg));
+    cases.push_back(std::move(c));
+  }
   return cases;
 }
 
