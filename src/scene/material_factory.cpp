@@ -15,6 +15,7 @@
 #include "materials/substrate.h"
 #include "materials/translucent.h"
 #include "materials/uber.h"
+#include "scene/hair_material_params.h"
 #include "scene/plugin_factories.h"
 #include "scene/scene_path.h"
 #include "scene/spectrum_input.h"
@@ -26,8 +27,9 @@ namespace candela {
 namespace {
 
 const std::vector<std::string> kMaterialNames = {
-    "matte",     "plastic", "translucent", "glass",    "mirror", "metal",      "shinymetal",
-    "substrate", "uber",    "mix",         "measured", "clay",   "subsurface", "kdsubsurface"};
+    "matte",    "plastic",    "translucent", "glass",        "mirror",
+    "metal",    "shinymetal", "substrate",   "uber",         "mix",
+    "measured", "clay",       "subsurface",  "kdsubsurface", "hair"};
 // Named in the draft (§10.9) without coefficients.
 const std::set<std::string> kUnprintedFits = {"felt", "primer", "skin", "bluepaint",
                                               "brushedmetal"};
@@ -223,6 +225,8 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
     const Material* m2 = named(d, "namedmaterial2");
     return std::make_unique<MixMaterial>(m1, m2, spec("amount", 0.5f));
   }
+  // pbrt-v3's hair, in every dialect (no other has the name); it takes no bump map.
+  if (d.name == "hair") return createHairMaterial(d, textures_);
   const Texture<Float>* bump = bumpMap(d);
   if (usesPbrtV3Models(d))
     if (auto m = createPbrtV3(d, bump)) return m;
