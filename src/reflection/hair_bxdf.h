@@ -12,11 +12,12 @@
 //
 // The scale tilt alpha rotates theta_i per lobe as f evaluates it: R by -2 alpha, TT by alpha, TRT
 // by 4 alpha (Mp is evaluated at theta_i + tilt). That rotation has no Jacobian, so with alpha != 0
-// the lobes do not integrate to exactly Ap over the sphere (~cos(tilt) near the normal plane) and
-// mass near a pole is left out or doubled. f keeps pbrt-v3's form; pdf() is the exact density of
-// sampleF's directions (Mp sampled about the untilted cone, then rotated), which differs from
-// pbrt-v3's pdf (the tilted Mp itself) by cos(theta_i + tilt) / cos(theta_i), so that sample
-// weights f |cos| / pdf are unbiased for this f. With alpha = 0 the two pdfs are the same.
+// a lobe integrates to about Ap cos(theta_o + tilt) / cos(theta_o) rather than Ap, and mass near
+// a pole is left out or doubled (averaged over wo and h the furnace moves by 1e-4 .. 7e-3 for
+// alpha 2 .. 5). f keeps pbrt-v3's form; pdf() is the exact density of sampleF's directions (Mp
+// sampled about the untilted cone, then rotated), which differs from pbrt-v3's pdf (the tilted Mp
+// itself) by cos(theta_i + tilt) / cos(theta_i) away from the poles, so that sample weights
+// f |cos| / pdf are unbiased for this f. With alpha = 0 the two pdfs are the same.
 // f is not reciprocal in general: Ap and Np depend on wo only (the model attenuates along the
 // outgoing ray's refracted path), and the tilt breaks Mp's symmetry in theta_i and theta_o.
 #pragma once
