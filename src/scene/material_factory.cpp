@@ -17,6 +17,7 @@
 #include "materials/translucent.h"
 #include "materials/uber.h"
 #include "scene/disney_material_params.h"
+#include "scene/hair_material_params.h"
 #include "scene/plugin_factories.h"
 #include "scene/scene_path.h"
 #include "scene/spectrum_input.h"
@@ -28,9 +29,9 @@ namespace candela {
 namespace {
 
 const std::vector<std::string> kMaterialNames = {
-    "matte",    "plastic",    "translucent", "glass",        "mirror",
-    "metal",    "shinymetal", "substrate",   "uber",         "mix",
-    "measured", "clay",       "subsurface",  "kdsubsurface", "fourier", "disney"};
+    "matte",      "plastic",      "translucent", "glass",  "mirror",   "metal",
+    "shinymetal", "substrate",    "uber",        "mix",    "measured", "clay",
+    "subsurface", "kdsubsurface", "fourier",     "disney", "hair"};
 // Named in the draft (§10.9) without coefficients.
 const std::set<std::string> kUnprintedFits = {"felt", "primer", "skin", "bluepaint",
                                               "brushedmetal"};
@@ -245,6 +246,8 @@ std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
     const Material* m2 = named(d, "namedmaterial2");
     return std::make_unique<MixMaterial>(m1, m2, spec("amount", 0.5f));
   }
+  // pbrt-v3's hair, in every dialect (no other has the name); it takes no bump map.
+  if (d.name == "hair") return createHairMaterial(d, textures_);
   const Texture<Float>* bump = bumpMap(d);
   // pbrt-v3's only; no other dialect has a material of that name.
   if (d.name == "disney") return createDisneyMaterial(d, textures_, bump, warn_);

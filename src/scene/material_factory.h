@@ -7,7 +7,8 @@
 //   substrate (Kd .5, Ks .5, uroughness .1, vroughness .1), uber (Kd .25, Ks .25, Kr 0,
 //   roughness .1, opacity 1, index 1.5), mix (amount .5, namedmaterial1, namedmaterial2),
 //   measured (filename), pbrt-v3's fourier (bsdffile), and lrt's Lafortune fit "clay"; in every
-//   dialect pbrt-v3's "disney" (scene/disney_material_params.h).
+//   dialect pbrt-v3's "disney" (scene/disney_material_params.h) and "hair"
+//   (scene/hair_material_params.h).
 // In a pbrt-v3 scene (scene/scene_dialect.h) metal, plastic, substrate, uber, translucent and
 // glass are pbrt-v3's instead: Trowbridge-Reitz microfacets with Smith masking and the parameters
 // "remaproughness" (true), metal's and uber's "uroughness"/"vroughness" (default: roughness),
