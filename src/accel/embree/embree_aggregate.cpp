@@ -12,14 +12,7 @@ namespace candela {
 
 namespace {
 
-bool isFinite(const Point3f& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-bool isFinite(const Vector3f& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-// Rays Embree must never see: its traversal assumes finite origins and directions.
+// Rays Embree must never see: it asserts on components beyond its range (core/ray.h).
 bool isTraceable(const Ray& ray) {
   return withinTraceableRange(ray.o, ray.d) && ray.d != Vector3f() && ray.tMax > 0;
 }
