@@ -94,9 +94,8 @@ const std::map<std::string, KnownDifference> kKnownDifferences = {
       "the cone's apex, as in quadrics-uv (resolved from about 64 samples per pixel)"}},
     {"hyperboloid-uv",
      {{{3, 0}, {0, 1}},
-      "two hyperboloids 0.3-0.7% brighter: candela shades with the fitted surface's own normal, "
-      "pbrt-v3 with one built from the p1-p2 segment's direction, which is tangent only on a "
-      "ruling (README.md, deliberate differences; not yet confirmed as the whole cause)"}},
+      "two hyperboloids 0.3-0.7% brighter, cause not found (README.md: shading with a normal "
+      "built from the p1-p2 segment's direction, tried, made them 20 times worse)"}},
     {"hyperboloid-checker", {{{3, 0}, {0, 1}}, "as in hyperboloid-uv"}},
     {"procedural",
      {{{0, 2}, {1, 2}, {0, 3}, {1, 3}},
