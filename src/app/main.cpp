@@ -138,9 +138,23 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
                  rays / std::max(result.seconds, 1e-9),
                  (unsigned long long)result.rays.intersectionRays,
                  (unsigned long long)result.rays.shadowRays);
-    if (result.nonFiniteSamples > 0)
-      std::fprintf(stderr, "warning: %llu samples had NaN or infinite radiance and were dropped\n",
-                   (unsigned long long)result.nonFiniteSamples);
+  }
+  if (result.nonFiniteSamples > 0 && (!cli.quiet || cli.stats)) {
+    // Where the first one was, and the options that render just that pixel up to it.
+    std::string where;
+    if (const auto& f = result.firstNonFinite) {
+      const Point2i res = job.film->fullResolution();
+      char buf[256];
+      std::snprintf(buf, sizeof buf,
+                    "; the first at pixel (%d, %d), sample %d (to render that pixel alone, with "
+                    "the same samples: --cropwindow %.9g %.9g %.9g %.9g)",
+                    f->pixel.x, f->pixel.y, f->index, double(f->pixel.x) / res.x,
+                    double(f->pixel.x + 1) / res.x, double(f->pixel.y) / res.y,
+                    double(f->pixel.y + 1) / res.y);
+      where = buf;
+    }
+    std::fprintf(stderr, "warning: %llu samples had NaN or infinite radiance and were dropped%s\n",
+                 (unsigned long long)result.nonFiniteSamples, where.c_str());
   }
   ExrOptions exr;
   exr.compression = cli.compression.empty() ? job.exrCompression : cli.compression;

@@ -40,9 +40,7 @@ ProgressiveResult renderProgressive(const SamplerRenderer& renderer, const Scene
     ro.endSample = next;
     ro.quiet = true;
     RenderResult r = renderer.render(scene, film, ro);
-    result.total.samples += r.samples;
-    result.total.rays += r.rays;
-    result.total.nonFiniteSamples += r.nonFiniteSamples;
+    result.total.add(r);
     done = next;
     result.spp = done;
     result.passes = pass + 1;

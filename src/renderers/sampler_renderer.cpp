@@ -18,8 +18,20 @@ struct TileCounters {
   RayStats rays;
   uint64_t samples = 0;
   uint64_t nonFinite = 0;
+  std::optional<PixelSampleIndex> firstNonFinite;
 };
+
+void keepFirst(std::optional<PixelSampleIndex>& first, const std::optional<PixelSampleIndex>& s) {
+  if (s && (!first || *s < *first)) first = s;
+}
 }  // namespace
+
+void RenderResult::add(const RenderResult& other) {
+  samples += other.samples;
+  rays += other.rays;
+  nonFiniteSamples += other.nonFiniteSamples;
+  keepFirst(firstNonFinite, other.firstNonFinite);
+}
 
 RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
                                      const RenderOptions& options) const {
@@ -95,6 +107,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
       }
       if (!result.L.isFinite()) {
         ++c.nonFinite;
+        keepFirst(c.firstNonFinite, PixelSampleIndex{pixel, s});
         result.L = Spectrum(0);
       }
       film.addSample(pixel, result.L, alpha, cs.filterWeight);
@@ -132,6 +145,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     result.rays += c.rays;
     result.samples += c.samples;
     result.nonFiniteSamples += c.nonFinite;
+    keepFirst(result.firstNonFinite, c.firstNonFinite);
   }
   if (splatting) film.addLightPaths(result.samples);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

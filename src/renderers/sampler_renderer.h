@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "cameras/camera.h"
 #include "film/film.h"
@@ -24,11 +25,27 @@ struct RenderOptions {
   int endSample = -1;
 };
 
+// A camera sample: its pixel and index there (what --cropwindow and --spp reproduce).
+struct PixelSampleIndex {
+  Point2i pixel;
+  int index = 0;
+  // Row by row, then by index: the order in which "first" is the same for any thread count.
+  bool operator<(const PixelSampleIndex& o) const {
+    if (pixel.y != o.pixel.y) return pixel.y < o.pixel.y;
+    if (pixel.x != o.pixel.x) return pixel.x < o.pixel.x;
+    return index < o.index;
+  }
+};
+
 struct RenderResult {
   double seconds = 0;
   uint64_t samples = 0;
   RayStats rays;
   uint64_t nonFiniteSamples = 0;  // NaN or infinite radiance, dropped and counted
+  // The first of them (in PixelSampleIndex order), when they came from camera samples.
+  std::optional<PixelSampleIndex> firstNonFinite;
+  // Adds another render's counts (rays, samples, non-finite samples, the earlier first).
+  void add(const RenderResult& other);
 };
 
 class SamplerRenderer {
