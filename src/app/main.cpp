@@ -9,6 +9,7 @@
 #include "app/cli_options.h"
 #include "app/error_log.h"
 #include "app/frame_writer.h"
+#include "core/interrupt.h"
 #include "film/error_metrics.h"
 #include "film/output/image_output.h"
 #include "film/output/texture_loader.h"
@@ -172,6 +173,7 @@ int main(int argc, char** argv) {
   CliOptions cli;
   if (auto code = parseCommandLine(argc, argv, &cli)) return *code;
   if (cli.sceneFiles.empty()) cli.sceneFiles.push_back("-");
+  installInterruptHandlers();
   try {
     EmbreeDevice device;
     FrameWriter writer(cli);
@@ -193,9 +195,16 @@ int main(int argc, char** argv) {
     for (const std::string& file : cli.sceneFiles)
       if (file != "-") inputs.push_back(file);
     if (!cli.reference.empty()) inputs.push_back(cli.reference);
-    for (size_t i = 0; i < frames.size(); ++i)
+    for (size_t i = 0; i < frames.size(); ++i) {
+      throwIfInterrupted();
       renderFrame(frames[i], cli, device, writer, int(i), inputs);
+    }
+    throwIfInterrupted();
     writer.commit();
+  } catch (const Interrupted& e) {
+    // The writer's staged files are gone with it; nothing was renamed.
+    std::fprintf(stderr, "candela: %s: stopped, nothing written\n", e.what());
+    return 128 + e.signal();
   } catch (const std::bad_alloc&) {
     // The scene asked for more than the machine has (the factories refuse the sizes they can
     // foresee: films, subdivision levels).

@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "core/interrupt.h"
+
 namespace candela {
 
 ProgressReporter::ProgressReporter(int64_t totalWork, std::string title, Mode mode)
@@ -22,6 +24,8 @@ double ProgressReporter::elapsedSeconds() const {
 }
 
 void ProgressReporter::update(int64_t work) {
+  // Every long loop reports progress: where an interrupt is noticed (core/interrupt.h).
+  throwIfInterrupted();
   int64_t now = workDone_.fetch_add(work) + work;
   if (mode_ == Mode::Quiet) return;
   double t = elapsedSeconds();

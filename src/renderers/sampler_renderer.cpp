@@ -8,6 +8,7 @@
 #include <chrono>
 
 #include "accel/embree/embree_device.h"
+#include "core/interrupt.h"
 #include "core/progress.h"
 #include "renderers/aov_sampler.h"
 
@@ -76,6 +77,8 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     int x1 = std::min(x0 + tile, bounds.pMax.x), y1 = std::min(y0 + tile, bounds.pMax.y);
     // One sample: traced, added to the film, and reported for adaptive sampling's decision.
     auto takeSample = [&](const Point2i& pixel, int s, bool wantSurface) {
+      // A tile of many samples a pixel takes seconds: an interrupt is noticed per sample.
+      throwIfInterrupted();
       sampler->startPixelSample(pixel, s);
       CameraSample cs = getCameraSample(*sampler, pixel, film.filter());
       RayDifferential ray;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "accel/embree/embree_device.h"
+#include "core/interrupt.h"
 #include "core/progress.h"
 #include "core/sampling.h"
 #include "film/splat_buffer.h"
@@ -187,6 +188,7 @@ RenderResult runMetropolisChains(const MetropolisSettings& settings, const BdptI
       };
       int64_t rejects = 0;
       for (int64_t m = 0; m < mutations; ++m) {
+        if ((m & 1023) == 0) throwIfInterrupted();  // a chain may run for seconds
         state.startIteration();
         PathSample proposed = evaluator.evaluate(state, depth, ts);
         Float a = current.y > 0 ? std::min(Float(1), proposed.y / current.y) : Float(1);
