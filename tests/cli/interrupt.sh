@@ -9,7 +9,14 @@ for sig in INT TERM; do
   want=$([ $sig = INT ] && echo 130 || echo 143)
   "$candela" "$src/scenes/cornell-box/cornell-box.pbrt" --spp 100000 -o out.exr -q 2> err.txt &
   pid=$!
-  sleep 1.5
+  # Until candela has installed its handlers (SigCgt holds SIGINT, bit 1, and SIGTERM, bit 14;
+  # loading its libraries can take seconds on a busy machine), then a little into the render.
+  for _ in $(seq 300); do
+    mask=$(awk '/^SigCgt:/ { print $2 }' /proc/$pid/status 2> /dev/null)
+    [ -n "$mask" ] && (( (16#$mask & 16#4002) == 16#4002 )) && break
+    sleep 0.1
+  done
+  sleep 0.5
   start=$(date +%s%N)
   kill -$sig $pid
   # Bounded: an interrupt that is never noticed fails here instead of hanging the suite.
