@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <cctype>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -88,22 +87,14 @@ void FrameWriter::checkOutputs(const std::string& filmFilename, int frameIndex,
   const std::string exrPath = exrPathOf(filmFilename, frameIndex, nullptr);
   std::vector<std::string> outputs = {exrPath};
   if (std::string preview = previewPathOf(exrPath, frameIndex); !preview.empty()) {
-    std::string ext = fs::path(preview).extension().string();
-    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext != ".png" && ext != ".jpg" && ext != ".jpeg")
-      throw FileError(preview, "unsupported preview format '" + ext + "' (expected .png or .jpg)");
+    previewFormat(preview);
     outputs.push_back(preview);
   }
   for (const std::string& out : outputs) {
-    const fs::path target(out);
-    if (target.filename().empty()) throw FileError(out, "not a file name");
-    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    checkImagePath(out);
     std::error_code ec;
-    if (!fs::is_directory(dir, ec))
-      throw FileError(out, "cannot write image: directory '" + dir.string() + "' does not exist");
-    if (fs::is_directory(target, ec)) throw FileError(out, "cannot write image: is a directory");
     for (const std::string& in : inputs)
-      if (fs::equivalent(target, fs::path(in), ec))
+      if (fs::equivalent(fs::path(out), fs::path(in), ec))
         throw FileError(out, "refusing to overwrite '" + in + "', which the render reads");
   }
 }

@@ -37,6 +37,14 @@ void Filter::buildSamplingTable() {
     }
   }
   integral_ = Float(sum * double(dx) * double(dy));
+  prefix_.assign(size_t(nx_ + 1) * size_t(ny_ + 1), 0);
+  for (int y = 0; y < ny_; ++y)
+    for (int x = 0; x < nx_; ++x)
+      prefix_[size_t(y + 1) * size_t(nx_ + 1) + size_t(x + 1)] =
+          double(table_[size_t(y) * size_t(nx_) + size_t(x)]) +
+          prefix_[size_t(y) * size_t(nx_ + 1) + size_t(x + 1)] +
+          prefix_[size_t(y + 1) * size_t(nx_ + 1) + size_t(x)] -
+          prefix_[size_t(y) * size_t(nx_ + 1) + size_t(x)];
   // Distribution2D samples |f| (it takes absolute values); negative lobes come back through the
   // sign of the weight.
   distribution_ = std::make_unique<Distribution2D>(table_, nx_, ny_);
@@ -59,16 +67,18 @@ Float Filter::integral() const { return integral_; }
 
 Float Filter::integralOver(const Bounds2f& offsets) const {
   Float dx = 2 * radius_.x / Float(nx_), dy = 2 * radius_.y / Float(ny_);
-  double sum = 0;
-  for (int y = 0; y < ny_; ++y) {
-    Float py = -radius_.y + (Float(y) + 0.5f) * dy;
-    if (py < offsets.pMin.y || py >= offsets.pMax.y) continue;
-    for (int x = 0; x < nx_; ++x) {
-      Float px = -radius_.x + (Float(x) + 0.5f) * dx;
-      if (px >= offsets.pMin.x && px < offsets.pMax.x)
-        sum += double(table_[size_t(y) * size_t(nx_) + size_t(x)]);
-    }
-  }
+  // The cells whose centres -r + (i + 1/2) d lie in [pMin, pMax): i from the first index at or
+  // past pMin to the first past pMax.
+  auto firstCell = [](Float p, Float r, Float d, int n) {
+    Float i = std::ceil((p + r) / d - 0.5f);  // clamped as a float: p may be far off
+    return i > 0 ? int(std::min(i, Float(n))) : 0;
+  };
+  int x0 = firstCell(offsets.pMin.x, radius_.x, dx, nx_),
+      x1 = std::max(x0, firstCell(offsets.pMax.x, radius_.x, dx, nx_));
+  int y0 = firstCell(offsets.pMin.y, radius_.y, dy, ny_),
+      y1 = std::max(y0, firstCell(offsets.pMax.y, radius_.y, dy, ny_));
+  auto at = [&](int x, int y) { return prefix_[size_t(y) * size_t(nx_ + 1) + size_t(x)]; };
+  double sum = at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0);
   return Float(sum * double(dx) * double(dy));
 }
 

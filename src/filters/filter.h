@@ -48,6 +48,9 @@ class Filter {
  private:
   Vector2f radius_;
   std::vector<Float> table_;  // f on a grid over [-r, r]^2
+  // Its summed-area table, (nx + 1) x (ny + 1): integralOver in constant time per query (splat
+  // buffers ask once for every pixel near the image's edge).
+  std::vector<double> prefix_;
   int nx_ = 0, ny_ = 0;
   std::unique_ptr<Distribution2D> distribution_;
   Float integral_ = 0;

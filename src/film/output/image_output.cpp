@@ -49,12 +49,9 @@ void writeAtomically(const std::string& path, const std::string& format,
                      const OIIO::ImageSpec& spec,
                      const std::function<bool(OIIO::ImageOutput&)>& write) {
   const fs::path target(path);
-  if (target.filename().empty()) throw FileError(path, "not a file name");
-  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  std::error_code ec;
   // Checked first only for a clearer message; the open below is what really decides.
-  if (!fs::is_directory(dir, ec))
-    throw FileError(path, "cannot write image: directory '" + dir.string() + "' does not exist");
+  checkImagePath(path);
+  std::error_code ec;
 
   const fs::path tmp = temporaryPathFor(target);
   std::string error;
@@ -224,17 +221,27 @@ void writeExr(const std::string& path, const ImageBuffer& image, const ImageMeta
   });
 }
 
+void checkImagePath(const std::string& path) {
+  const fs::path target(path);
+  if (target.filename().empty()) throw FileError(path, "not a file name");
+  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw FileError(path, "cannot write image: directory '" + dir.string() + "' does not exist");
+  if (fs::is_directory(target, ec)) throw FileError(path, "cannot write image: is a directory");
+}
+
+std::string previewFormat(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".png") return "png";
+  if (ext == ".jpg" || ext == ".jpeg") return "jpeg";
+  throw FileError(path, "unsupported preview format '" + ext + "' (expected .png or .jpg)");
+}
+
 void writePreview(const std::string& path, const ImageBuffer& sceneLinear,
                   const ColorManagement& colorManagement, const std::string& display,
                   const std::string& view) {
-  const std::string ext = lowerExtension(path);
-  std::string format;
-  if (ext == ".png")
-    format = "png";
-  else if (ext == ".jpg" || ext == ".jpeg")
-    format = "jpeg";
-  else
-    throw FileError(path, "unsupported preview format '" + ext + "' (expected .png or .jpg)");
+  const std::string format = previewFormat(path);
   if (!sceneLinear.consistent()) throw FileError(path, "cannot write preview: empty image");
 
   // RGB only; a one- or two-channel image is shown as grey from its first channel.

@@ -78,6 +78,12 @@ class ColorManagement {
   std::unique_ptr<Impl> impl_;
 };
 
+// What writeExr and writePreview check before writing, for callers that must know before any
+// work is done: path names a file whose directory exists (FileError naming path otherwise); for a
+// preview also that its extension is .png, .jpg or .jpeg. Returns the preview's format name.
+void checkImagePath(const std::string& path);
+std::string previewFormat(const std::string& path);
+
 // Writes an 8-bit RGB preview (PNG or JPEG, chosen by the extension of path) of a scene-linear
 // image through a display view: converts, clamps to [0, 1], quantises. Alpha is dropped: the
 // preview is for looking at. Atomic and throwing like writeExr.
