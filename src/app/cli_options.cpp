@@ -42,6 +42,10 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
                  "plastic's coat Fresnel: exact (air outside, 1.5 inside) or pbrt (pbrt's "
                  "reversed indices, pbrt-v3 issue #210)")
       ->check(CLI::IsMember({"exact", "pbrt"}));
+  app.add_option("--hyperboloid-normal", o->hyperboloidNormal,
+                 "hyperboloid's normal: exact (the fitted surface's) or pbrt (from the p1-p2 "
+                 "segment's direction, off the surface where the segment is not a ruling)")
+      ->check(CLI::IsMember({"exact", "pbrt"}));
   app.add_flag("-q,--quiet", o->quiet, "No progress or statistics output");
   app.add_flag("-v,--verbose", o->verbose, "More detail");
   app.add_flag("--stats", o->stats, "Print what the scene built (geometry, Embree, lights...)");

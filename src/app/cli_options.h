@@ -23,10 +23,11 @@ struct CliOptions {
   std::string accelerator;      // overrides the scene's Accelerator; "" = the scene's (embree)
   std::string subdiv = "book";  // the code that refines "loopsubdiv": book or opensubdiv
   bool half = false;
-  std::string dialect;                // "" (detect), "pbrt-v2" or "pbrt-v3": material models
-  std::string coatFresnel = "exact";  // plastic's coat: "exact" or "pbrt" (reversed indices)
-  std::string compression;            // "" = the Film's "compression" (default zip)
-  std::string aovs;                   // "albedo,normal,..." added to the Film's "aovs"
+  std::string dialect;                      // "" (detect), "pbrt-v2" or "pbrt-v3": material models
+  std::string coatFresnel = "exact";        // plastic's coat: "exact" or "pbrt" (reversed indices)
+  std::string hyperboloidNormal = "exact";  // "exact" or "pbrt" (the segment's direction as dp/dv)
+  std::string compression;                  // "" = the Film's "compression" (default zip)
+  std::string aovs;                         // "albedo,normal,..." added to the Film's "aovs"
   std::string ocioConfig, display = "sRGB", view = "Standard";
   std::string colorSpace;  // working and output space ("" = the config's scene_linear)
   std::string toneMap;     // preview tone map, overriding the scene's ToneMap statement

@@ -77,6 +77,8 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.quick = cli.quick;
   build.accelerator = cli.accelerator;
   build.subdiv = cli.subdiv == "opensubdiv" ? LoopProducer::OpenSubdiv : LoopProducer::Book;
+  build.hyperboloidNormal =
+      cli.hyperboloidNormal == "pbrt" ? HyperboloidNormal::SegmentAsPbrt : HyperboloidNormal::Exact;
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
   build.materialModels.dialect = parseSceneDialect(cli.dialect);
   build.materialModels.plasticCoat =

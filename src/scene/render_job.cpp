@@ -120,7 +120,8 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* n
   const MediumInterface* mediumInterface = job.namedMedia->interfaceOf(sd);
   const WarningSink& warn = options.warn;
   bool allowAreaLight = noAreaLight == nullptr;
-  CreatedShapes created = createShapes(sd, objectToWorld, *job.textures, options.subdiv);
+  CreatedShapes created =
+      createShapes(sd, objectToWorld, *job.textures, options.subdiv, options.hyperboloidNormal);
   reportUnused(sd, warn);
   // pbrt 3e cannot sample points on curves either (its Curve::Sample is unimplemented).
   if (sd.name == "curve" && sd.areaLight && allowAreaLight)

@@ -25,6 +25,7 @@
 #include "scene/scene.h"
 #include "scene/scene_description.h"
 #include "scene/texture_factory.h"
+#include "shapes/hyperboloid_normal.h"
 #include "shapes/loop_producer.h"
 #include "shapes/shape.h"
 
@@ -44,7 +45,8 @@ struct BuildOptions {
   bool quick = false;                  // quarter resolution, an eighth of the samples
   std::string accelerator;             // overrides the Accelerator statement ("" = the scene's)
   LoopProducer subdiv = LoopProducer::Book;  // the code that refines "loopsubdiv" shapes
-  unsigned aovs = 0;                         // AovFlag bits, added to the Film's "aovs"
+  HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact;  // --hyperboloid-normal
+  unsigned aovs = 0;  // AovFlag bits, added to the Film's "aovs"
   // scene_linear RGB -> working-space RGB for every colour parameter (--colorspace); none =
   // identity.
   std::optional<std::array<Float, 9>> colorMatrix;

@@ -58,15 +58,16 @@ void readAlpha(const ShapeDesc& desc, TextureFactory& textures, TriangleMesh* me
 }  // namespace
 
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           TextureFactory& textures, LoopProducer subdiv) {
-  CreatedShapes out = createShapes(desc, objectToWorld, subdiv);
+                           TextureFactory& textures, LoopProducer subdiv,
+                           HyperboloidNormal hyperboloidNormal) {
+  CreatedShapes out = createShapes(desc, objectToWorld, subdiv, hyperboloidNormal);
   if (out.mesh && (desc.name == "trianglemesh" || desc.name == "plymesh"))
     readAlpha(desc, textures, out.mesh.get());
   return out;
 }
 
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           LoopProducer subdiv) {
+                           LoopProducer subdiv, HyperboloidNormal hyperboloidNormal) {
   CreatedShapes out;
   using QuadricFactory = std::unique_ptr<Shape> (*)(const Transform&, bool, const ParamSet&);
   QuadricFactory quadric = nullptr;
@@ -75,8 +76,10 @@ CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld
   if (desc.name == "disk") quadric = createDiskShape;
   if (desc.name == "cone") quadric = createConeShape;
   if (desc.name == "paraboloid") quadric = createParaboloidShape;
-  if (desc.name == "hyperboloid") quadric = createHyperboloidShape;
-  if (quadric) {
+  if (desc.name == "hyperboloid") {
+    out.shapes.push_back(createHyperboloidShape(objectToWorld, desc.reverseOrientation, desc.params,
+                                                hyperboloidNormal));
+  } else if (quadric) {
     out.shapes.push_back(quadric(objectToWorld, desc.reverseOrientation, desc.params));
   } else if (desc.name == "heightfield") {
     out.shapes = createHeightfieldShapes(objectToWorld, desc.reverseOrientation, desc.params,

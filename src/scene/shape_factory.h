@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "scene/scene_description.h"
+#include "shapes/hyperboloid_normal.h"
 #include "shapes/loop_producer.h"
 #include "shapes/shape.h"
 
@@ -23,11 +24,14 @@ struct CreatedShapes {
 class TextureFactory;
 
 // Triangle meshes' "alpha" and "shadowalpha" (pbrt-v3 cut-outs, float textures or constants) come
-// from textures. subdiv picks the code that refines "loopsubdiv" (the same surface either way).
+// from textures. subdiv picks the code that refines "loopsubdiv" (the same surface either way);
+// hyperboloidNormal the hyperboloid's normal (exact, or pbrt's).
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           TextureFactory& textures, LoopProducer subdiv = LoopProducer::Book);
+                           TextureFactory& textures, LoopProducer subdiv = LoopProducer::Book,
+                           HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact);
 // Without textures: "alpha" and "shadowalpha" are not read (and so reported unused).
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           LoopProducer subdiv = LoopProducer::Book);
+                           LoopProducer subdiv = LoopProducer::Book,
+                           HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact);
 
 }  // namespace candela

@@ -12,14 +12,16 @@ HyperboloidFit fitOf(const Point3f& p1, const Point3f& p2) {
 }  // namespace
 
 HyperboloidShape::HyperboloidShape(const Transform& objectToWorld, bool reverseOrientation,
-                                   const Point3f& p1, const Point3f& p2, Float phiMaxDeg)
+                                   const Point3f& p1, const Point3f& p2, Float phiMaxDeg,
+                                   HyperboloidNormal normal)
     : Quadric(objectToWorld, reverseOrientation),
       fit_(fitOf(p1, p2)),
       profile_(fit_.degenerate ? 0 : fit_.k, fit_.degenerate ? 0 : fit_.d, std::min(p1.z, p2.z),
                std::max(p1.z, p2.z)),
       zMin_(std::min(p1.z, p2.z)),
       zMax_(std::max(p1.z, p2.z)),
-      phiMax_(phiMaxRadians(phiMaxDeg)) {
+      phiMax_(phiMaxRadians(phiMaxDeg)),
+      normal_(normal) {
   const double* a = fit_.p1;
   for (int i = 0; i < 3; ++i) delta_[i] = fit_.p2[i] - a[i];
   double dz = delta_[2];
@@ -110,8 +112,17 @@ Quadric::LocalGeometry HyperboloidShape::geometryAt(const double p[3]) const {
   double radial = dz * rhoP, tangential = r * w;
   double dvx = radial * cx - tangential * cy, dvy = radial * cy + tangential * cx;
   g.dpdu = Vector3f(Float(-phiMax_ * yg), Float(phiMax_ * xg), 0);
-  g.dpdv = Vector3f(Float(dvx), Float(dvy), Float(dz));
   g.d2Pduu = Vector3f(Float(-phiMax_ * phiMax_ * xg), Float(-phiMax_ * phiMax_ * yg), 0);
+  if (normal_ == HyperboloidNormal::SegmentAsPbrt) {
+    // pbrt's derivatives: the segment's direction turned by phi, and no second derivative in v.
+    double c = std::cos(phi), s = std::sin(phi);
+    double sx = delta_[0] * c - delta_[1] * s, sy = delta_[0] * s + delta_[1] * c;
+    g.dpdv = Vector3f(Float(sx), Float(sy), Float(dz));
+    g.d2Pduv = Vector3f(Float(-phiMax_ * sy), Float(phiMax_ * sx), 0);
+    g.d2Pdvv = Vector3f(0, 0, 0);
+    return g;
+  }
+  g.dpdv = Vector3f(Float(dvx), Float(dvy), Float(dz));
   g.d2Pduv = Vector3f(Float(-phiMax_ * dvy), Float(phiMax_ * dvx), 0);
   // d2p/dv2 = (dz^2 rho'' - rho w^2) e_r + (2 dz rho' w + rho w') e_theta, rho'' = (k -
   // rho'^2)/rho.
@@ -134,7 +145,8 @@ void HyperboloidShape::sampleObject(const Point2f& u, double p[3]) const {
 }
 
 std::unique_ptr<Shape> createHyperboloidShape(const Transform& objectToWorld,
-                                              bool reverseOrientation, const ParamSet& params) {
+                                              bool reverseOrientation, const ParamSet& params,
+                                              HyperboloidNormal normal) {
   Point3f p1 = params.getOnePoint3f("p1", Point3f(0, 0, 0));
   Point3f p2 = params.getOnePoint3f("p2", Point3f(1, 1, 1));
   for (const char* name : {"p1", "p2"}) {
@@ -148,7 +160,7 @@ std::unique_ptr<Shape> createHyperboloidShape(const Transform& objectToWorld,
                      "hyperboloid \"p1\" and \"p2\" must differ in z (use a disk with an "
                      "\"innerradius\" for a flat ring)");
   return std::make_unique<HyperboloidShape>(objectToWorld, reverseOrientation, p1, p2,
-                                            quadricPhiMax(params));
+                                            quadricPhiMax(params), normal);
 }
 
 }  // namespace candela

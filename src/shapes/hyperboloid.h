@@ -10,14 +10,15 @@
 // so it is followed.
 //
 // Unlike pbrt-v3: dp/dv is the derivative of this parameterisation on the fitted surface (pbrt
-// uses the segment's direction turned by phi, tangent only on a ruling), so the normal is the
-// surface's; the bounds cover the fitted surface (pbrt bounds by p1's and p2's radii, which can
-// cut the surface off); the area is exact and area sampling works (pbrt-v3 has neither). The
-// normal points away from the axis whichever end is higher.
+// uses the segment's direction turned by phi, tangent only on a ruling; HyperboloidNormal chooses),
+// so the normal is the surface's; the bounds cover the fitted surface (pbrt bounds by p1's and p2's
+// radii, which can cut the surface off); the area is exact and area sampling works (pbrt-v3 has
+// neither). The normal points away from the axis whichever end is higher.
 #pragma once
 
 #include <memory>
 
+#include "shapes/hyperboloid_normal.h"
 #include "shapes/hyperboloid_profile.h"
 #include "shapes/quadric.h"
 
@@ -28,7 +29,8 @@ class HyperboloidShape : public Quadric {
   // p1 and p2 must differ in z (checked by the factory; otherwise the shape has no area);
   // phiMaxDeg is clamped to [0, 360].
   HyperboloidShape(const Transform& objectToWorld, bool reverseOrientation, const Point3f& p1,
-                   const Point3f& p2, Float phiMaxDeg);
+                   const Point3f& p2, Float phiMaxDeg,
+                   HyperboloidNormal normal = HyperboloidNormal::Exact);
   Bounds3f objectBound() const override;
   const char* kind() const override { return "hyperboloid"; }
   // The fitted surface rho^2 = d + k z^2.
@@ -55,10 +57,12 @@ class HyperboloidShape : public Quadric {
   // x1 dy - y1 dx: its angle turns at the rate cross_ / R(v).
   double alpha_, beta_, gamma_, cross_;
   double rMax_, zMin_, zMax_, phiMax_;
+  HyperboloidNormal normal_;
 };
 
 // "hyperboloid": "p1" (0 0 0), "p2" (1 1 1), "phimax" (360 degrees; "thetamax" in lrt).
 std::unique_ptr<Shape> createHyperboloidShape(const Transform& objectToWorld,
-                                              bool reverseOrientation, const ParamSet& params);
+                                              bool reverseOrientation, const ParamSet& params,
+                                              HyperboloidNormal normal = HyperboloidNormal::Exact);
 
 }  // namespace candela
