@@ -17,30 +17,12 @@
 #include "scene/plugin_factories.h"
 #include "scene/texture_factory.h"
 #include "support/param_items.h"
+#include "support/temp_dir.h"
 
 namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("candela-tex-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
- private:
-  fs::path dir_;
-};
 
 // The sRGB decoding (IEC 61966-2-1), written out independently of OCIO.
 double srgbToLinear(double v) {
@@ -81,7 +63,7 @@ TEST(TextureLoader, DefaultRuleByPixelType) {
 }
 
 TEST(TextureLoader, EightBitFilesAreSrgbEncoded) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   std::string png = write128Png(dir, cm);
   ImageBuffer img = loadTextureImage(png, "", cm);
@@ -109,7 +91,7 @@ TEST(TextureLoader, SixteenBitAndGreyIntegerFilesAreSrgbEncoded) {
 }
 
 TEST(TextureLoader, FloatFilesAreLinear) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   std::string exr = dir.path("colour.exr");
   // Channels are looked up by name (EXR stores them sorted); alpha is dropped.
@@ -126,7 +108,7 @@ TEST(TextureLoader, FloatFilesAreLinear) {
 }
 
 TEST(TextureLoader, GreyImagesBecomeGreyRgb) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   std::string exr = dir.path("grey.exr");
   writeExr(exr, flat(2, 2, {"Y"}, {0.75f}), ImageMetadata{});
@@ -134,7 +116,7 @@ TEST(TextureLoader, GreyImagesBecomeGreyRgb) {
 }
 
 TEST(TextureLoader, ErrorsNameThePath) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   auto message = [&](const std::string& path, const std::string& colorSpace) -> std::string {
     try {
@@ -156,7 +138,7 @@ TEST(TextureLoader, ErrorsNameThePath) {
 }
 
 TEST(TextureLoader, ImageTextureThroughTheFactory) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   write128Png(dir, cm);
   TextureDesc d;
@@ -184,7 +166,7 @@ TEST(TextureLoader, ImageTextureThroughTheFactory) {
 TEST(LightMaps, EightBitFilesAreReadUndecodedAsPbrtDoes) {
   // pbrt-v3's goniometric and projection lights (and v2's) take an 8-bit image's codes / 255 as
   // they are: code 128 is 0.502, where an image texture decodes it to 0.216.
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   std::string png = write128Png(dir, cm);
   auto load = [&cm](const std::string& path, const std::string& colorSpace) {
