@@ -10,8 +10,8 @@ Cases (each run --preview none unless named, at 32 x 32 pixels and 1 sample per 
   empty          Film 1 x 1, nothing in the world (the issue's figure: 0.16 s, 140 MB, 264 libraries)
   empty+png      the same with its PNG preview (the image plug-in, OpenImageIO, loaded)
   mesh N         a flat grid of N triangles from a binary PLY (Shape "plymesh")
-  instanced K    the 1M-triangle mesh as one ObjectBegin, K ObjectInstances of it; "per instance"
-                 is (peak(K) - peak(1)) / (K - 1)
+  instanced K    the largest mesh as one ObjectBegin, K ObjectInstances of it (K = 1 and
+                 --instances); "bytes per instance" is (peak(K) - peak(1)) / (K - 1)
 Every binary given runs every case, alternating (so that load on the machine falls on all).
 CPU time (user + system) and peak RSS come from wait4 and are robust to other load; wall time is
 not. Libraries are counted in one extra run with LD_DEBUG=files (dlopen'ed ones included).
@@ -84,7 +84,7 @@ def write_scenes(tmp, triangle_counts, instances, accels):
             with open(scene, "w") as f:
                 f.write(HEADER.format(res=32, eye="0.5 0.5 1.2", look="0.5 0.5 0", accel=accel))
                 f.write(f'Shape "plymesh" "string filename" "{ply}"\nWorldEnd\n')
-            cases.append((f"mesh", accel, scene, tris, ["--preview", "none"]))
+            cases.append(("mesh", accel, scene, tris, ["--preview", "none"]))
         ply, tris = meshes[max(triangle_counts)]
         for k in sorted({1, instances}):
             side = max(1, round(k ** 0.5 + 0.499))
@@ -99,7 +99,7 @@ def write_scenes(tmp, triangle_counts, instances, accels):
                     f.write(f"AttributeBegin\nTranslate {1.25 * (i % side)} {1.25 * (i // side)} 0\n"
                             'ObjectInstance "grid"\nAttributeEnd\n')
                 f.write("WorldEnd\n")
-            cases.append((f"instanced {k}", accel, scene, tris * k, ["--preview", "none"]))
+            cases.append((f"instanced {k}", accel, scene, tris, ["--preview", "none"]))
     return cases
 
 
@@ -164,23 +164,25 @@ def main():
                 cpu, wall, rss = (statistics.median(s[i] for s in samples[label]) for i in range(3))
                 libs = libraries(path, scene, extra, out, tmp) if name.startswith("empty") else ""
                 rows.append({"binary": label, "case": name, "accel": accel, "triangles": tris,
+                             "instances": name.split()[1] if name.startswith("instanced") else "",
                              "cpu_s": cpu, "wall_s": wall, "peak_rss_mb": rss / 1e6,
                              "libraries": libs})
     # Per instance: the extra peak RSS of K instances over one, per added instance.
     one = {(r["binary"], r["accel"]): r["peak_rss_mb"] for r in rows if r["case"] == "instanced 1"}
     for r in rows:
         k = int(r["case"].split()[1]) if r["case"].startswith("instanced ") else 0
-        r["bytes_per_instance"] = (f"{(r['peak_rss_mb'] - one[(r['binary'], r['accel'])]) * 1e6 / (k - 1):.0f}"
-                                   if k > 1 else "")
+        extra = r["peak_rss_mb"] - one[(r["binary"], r["accel"])] if k > 1 else 0
+        r["bytes_per_instance"] = f"{extra * 1e6 / (k - 1):.0f}" if k > 1 else ""
 
-    keys = ["binary", "case", "accel", "triangles", "cpu_s", "wall_s", "peak_rss_mb",
+    keys = ["binary", "case", "accel", "triangles", "instances", "cpu_s", "wall_s", "peak_rss_mb",
             "bytes_per_instance", "libraries"]
-    print("| " + " | ".join(keys) + " |")
+    print("| binary | case | accel | mesh triangles | instances | CPU s | wall s | peak RSS MB | "
+          "bytes per instance | libraries |")
     print("|" + "---|" * len(keys))
     for r in rows:
         print(f"| {r['binary']} | {r['case']} | {r['accel']} | {r['triangles']:,} | "
-              f"{r['cpu_s']:.3f} | {r['wall_s']:.3f} | {r['peak_rss_mb']:.1f} | "
-              f"{r['bytes_per_instance']} | {r['libraries']} |")
+              f"{r['instances']} | {r['cpu_s']:.3f} | {r['wall_s']:.3f} | "
+              f"{r['peak_rss_mb']:.1f} | {r['bytes_per_instance']} | {r['libraries']} |")
     if args.csv:
         with open(args.csv, "w") as f:
             f.write(",".join(keys) + "\n")
