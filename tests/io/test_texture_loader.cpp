@@ -1,7 +1,8 @@
-// Image texture files through OpenImageIO and OpenColorIO: the default colour-space rule (8-bit
-// files are sRGB-encoded, float files linear), overrides by name or alias, errors naming the
-// path, and an image texture made by the TextureFactory with this loader; light maps, which
-// pbrt-v2/v3 read undecoded, 8-bit files included.
+// Image texture files (OpenEXR through OpenEXR, PNG through the OpenImageIO plug-in, chosen by
+// the file's contents) and OpenColorIO: the default colour-space rule (8-bit files are
+// sRGB-encoded, float files linear), overrides by name or alias, errors naming the path, and an
+// image texture made by the TextureFactory with this loader; light maps, which pbrt-v2/v3 read
+// undecoded, 8-bit files included.
 #include "film/output/texture_loader.h"
 
 #include <gtest/gtest.h>
@@ -105,6 +106,20 @@ TEST(TextureLoader, FloatFilesAreLinear) {
   // Declared sRGB-encoded, an EXR's 0.5 is decoded.
   float decoded = float(srgbToLinear(0.5));
   expectAll(loadTextureImage(half, "srgb_texture", cm), decoded, decoded, decoded, 2e-4f);
+}
+
+TEST(TextureLoader, TheFormatIsTheFilesNotTheNames) {
+  // Read by their contents: a PNG named .exr is still 8-bit sRGB, an EXR named .png still float.
+  TempDir dir("tex");
+  ColorManagement cm;
+  const std::string png = std::string(CANDELA_TEST_DATA_DIR) + "/textures/grey8.png";
+  const std::string pngAsExr = dir.path("png.exr");
+  std::filesystem::copy_file(png, pngAsExr);
+  float v8 = float(srgbToLinear(128.0 / 255.0));
+  expectAll(loadTextureImage(pngAsExr, "", cm), v8, v8, v8, 2e-4f);
+  const std::string exrAsPng = dir.path("exr.png");
+  writeExr(exrAsPng, flat(2, 2, {"R", "G", "B"}, {0.5f, 0.25f, 0.125f}), ImageMetadata{});
+  expectAll(loadTextureImage(exrAsPng, "", cm), 0.5f, 0.25f, 0.125f, 0);
 }
 
 TEST(TextureLoader, GreyImagesBecomeGreyRgb) {

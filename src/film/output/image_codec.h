@@ -1,9 +1,9 @@
 // The narrow interface between candela and its image plug-in (candela_oiio.so, OpenImageIO):
 // read any image, write an 8-bit one. OpenImageIO and the ~250 libraries it pulls in (OpenCV,
-// FFmpeg, GStreamer, DICOM, OpenVDB...) cost 0.2 s of dynamic linking and 100 MB resident per
-// process, so candela loads the plug-in with dlopen only when a scene reads a non-EXR image or a
-// preview is written (DESIGN.md: leave out what the scene does not use). Both sides are built
-// from this tree by the same compiler; kImageCodecVersion guards against a stale plug-in.
+// FFmpeg, GStreamer, DICOM, OpenVDB...) cost every process 0.18 s of CPU, mostly dynamic linking,
+// and 128 MB resident, so candela loads the plug-in with dlopen only when a scene reads a non-EXR
+// image or a preview is written (DESIGN.md: leave out what the scene does not use). Both sides are
+// built from this tree by the same compiler; kImageCodecVersion guards against a stale plug-in.
 #pragma once
 
 #include <string>
