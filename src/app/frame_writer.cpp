@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "film/output/image_output.h"
+#include "film/output/image_plugin.h"
 #include "film/tonemap/tone_map.h"
 
 namespace candela {
@@ -88,6 +89,7 @@ void FrameWriter::checkOutputs(const std::string& filmFilename, int frameIndex,
   std::vector<std::string> outputs = {exrPath};
   if (std::string preview = previewPathOf(exrPath, frameIndex); !preview.empty()) {
     previewFormat(preview);
+    imagePlugin();  // the preview's writer: a missing plug-in fails here, before the render
     outputs.push_back(preview);
   }
   for (const std::string& out : outputs) {

@@ -33,9 +33,9 @@ class FrameWriter {
   const ColorManagement& colorManagement() const { return *colorManagement_; }
   const std::string& workingSpace() const { return workingSpace_; }
   // The files a frame will write (its EXR, and its preview unless 'none'), checked before any
-  // rendering: each directory must exist, the preview's format must be known, and none may be a
-  // file the render reads (`inputs`: scene files, textures, the reference). A FileError names
-  // the path.
+  // rendering: each directory must exist, the preview's format must be known and the image
+  // plug-in that writes it loadable, and none may be a file the render reads (`inputs`: scene
+  // files, textures, the reference). A FileError names the path.
   void checkOutputs(const std::string& filmFilename, int frameIndex,
                     const std::vector<std::string>& inputs) const;
   // extra: metadata of the caller's to add (stop conditions, error).

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Python tools run with what the extras install list brings (python3, python3-matplotlib):
 # the convergence benchmark at a tiny sample count on two scenes (references through tools/reference.sh, the
-# table and the plots), and the accelerator scaling plot from a small CSV.
+# table and the plots), the accelerator scaling plot from a small CSV, and the footprint benchmark.
 set -euo pipefail
 candela=$1 src=$2 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
@@ -26,4 +26,13 @@ embree,10000,0.02,300,350
 CSV
 /usr/bin/python3 "$src/tools/plot_accel_scaling.py" scaling.csv -o scaling.png
 is_png scaling.png || { echo "FAIL: plot_accel_scaling.py wrote no PNG"; exit 1; }
+# The footprint benchmark at toy sizes: every case runs and is reported; an EXR-only run loads
+# fewer libraries than one writing a PNG preview (which loads the OpenImageIO plug-in).
+/usr/bin/python3 "$src/benchmarks/footprint.py" --candela "$candela" --runs 1 --triangles 200 \
+  --instances 3 --accel embree,grid --csv footprint.csv >footprint.txt
+[ "$(tail -n +2 footprint.csv | wc -l)" = 8 ] ||
+  { cat footprint.csv; echo "FAIL: expected 8 rows (2 empty, 2 accelerators x 3)"; exit 1; }
+libs() { awk -F, -v c="$1" '$2 == c { print $NF }' footprint.csv; }
+[ "$(libs empty)" -gt 0 ] && [ "$(libs empty)" -lt "$(libs empty+png)" ] ||
+  { cat footprint.csv; echo "FAIL: the EXR-only run loaded as many libraries as the preview"; exit 1; }
 echo "python tools: ok"

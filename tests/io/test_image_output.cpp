@@ -15,36 +15,12 @@
 #include <vector>
 
 #include "core/error.h"
+#include "support/temp_dir.h"
 
 namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("candela-io-" + std::string(info->test_suite_name()) + "-" +
-                                        info->name() + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  // Every entry of the directory, to catch stray temporary files.
-  std::set<std::string> entries() const {
-    std::set<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_)) names.insert(e.path().filename().string());
-    return names;
-  }
-
- private:
-  fs::path dir_;
-};
 
 const std::vector<std::string> kAovChannels = {
     "R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"};
@@ -89,7 +65,7 @@ std::vector<float> readChromaticities(const ImageMetadata& md) {
 }
 
 TEST(ExrOutput, FloatRoundTripReadsAovChannelsByName) {
-  TempDir dir;
+  TempDir dir("io");
   ImageBuffer img = testImage(13, 7, kAovChannels);
   writeExr(dir.path("aov.exr"), img, {});
   ImageBuffer back = readImage(dir.path("aov.exr"));
@@ -99,7 +75,7 @@ TEST(ExrOutput, FloatRoundTripReadsAovChannelsByName) {
 }
 
 TEST(ExrOutput, HalfRoundTrip) {
-  TempDir dir;
+  TempDir dir("io");
   std::vector<std::string> channels = kAovChannels;
   for (const char* c : {"P.X", "P.Y", "P.Z", "samples"}) channels.push_back(c);
   ImageBuffer img = testImage(9, 5, channels);
@@ -127,7 +103,7 @@ TEST(ExrOutput, HalfRoundTrip) {
 }
 
 TEST(ExrOutput, ChromaticitiesOfLinearRec709) {
-  TempDir dir;
+  TempDir dir("io");
   writeExr(dir.path("c.exr"), testImage(4, 4, {"R", "G", "B", "A"}), {});
   ImageMetadata md;
   readImage(dir.path("c.exr"), &md);
@@ -138,7 +114,7 @@ TEST(ExrOutput, ChromaticitiesOfLinearRec709) {
 }
 
 TEST(ExrOutput, ChromaticitiesOfAcescg) {
-  TempDir dir;
+  TempDir dir("io");
   writeExr(dir.path("c.exr"), testImage(4, 4, {"R", "G", "B"}), {},
            ExrOptions{.colorSpace = "acescg"});
   ImageMetadata md;
@@ -152,7 +128,7 @@ TEST(ExrOutput, ChromaticitiesOfAcescg) {
 }
 
 TEST(ExrOutput, UnknownColorSpaceHasNoChromaticities) {
-  TempDir dir;
+  TempDir dir("io");
   writeExr(dir.path("c.exr"), testImage(2, 2, {"R", "G", "B"}), {},
            ExrOptions{.colorSpace = "my_space"});
   ImageMetadata md;
@@ -161,7 +137,7 @@ TEST(ExrOutput, UnknownColorSpaceHasNoChromaticities) {
 }
 
 TEST(ExrOutput, ExplicitChromaticitiesOverrideTheLookup) {
-  TempDir dir;
+  TempDir dir("io");
   const Chromaticities custom{{0.7f, 0.3f, 0.2f, 0.7f, 0.1f, 0.05f, 0.31f, 0.32f}};
   writeExr(dir.path("c.exr"), testImage(2, 2, {"R", "G", "B"}), {},
            ExrOptions{.colorSpace = "my_space", .chromaticities = custom});
@@ -173,7 +149,7 @@ TEST(ExrOutput, ExplicitChromaticitiesOverrideTheLookup) {
 }
 
 TEST(ExrOutput, MetadataBecomesHeaderAttributes) {
-  TempDir dir;
+  TempDir dir("io");
   ImageMetadata md;
   md.strings = {{"Software", "candela 0.1.0"}, {"candela:scene", "scenes/cornell.pbrt"}};
   md.ints = {{"candela:spp", 64}, {"candela:seed", 7}};
@@ -194,7 +170,7 @@ TEST(ExrOutput, MetadataBecomesHeaderAttributes) {
 }
 
 TEST(ExrOutput, CompressionVariants) {
-  TempDir dir;
+  TempDir dir("io");
   ImageBuffer img = testImage(64, 40, kAovChannels);
   for (const char* comp : {"zip", "zips", "piz", "rle", "none", "dwaa", "dwab", "dwaa:60"}) {
     SCOPED_TRACE(comp);
@@ -211,7 +187,7 @@ TEST(ExrOutput, CompressionVariants) {
 }
 
 TEST(ExrOutput, CropWindowRoundTrips) {
-  TempDir dir;
+  TempDir dir("io");
   ImageBuffer img = testImage(5, 3, {"R", "G", "B", "A"});
   img.xOffset = 10;
   img.yOffset = 20;
@@ -241,13 +217,13 @@ void expectAtomicFailure(const TempDir& dir, const std::string& path, F write,
 }
 
 TEST(ExrOutput, MissingDirectoryFailsAtomically) {
-  TempDir dir;
+  TempDir dir("io");
   std::string path = dir.path("no/such/dir/out.exr");
   expectAtomicFailure(dir, path, [&] { writeExr(path, testImage(2, 2, {"R", "G", "B"}), {}); }, {});
 }
 
 TEST(ExrOutput, UnknownCompressionFailsAtomically) {
-  TempDir dir;
+  TempDir dir("io");
   std::string path = dir.path("out.exr");
   for (const char* comp : {"lzma", "zip:9", "dwaa:", ""}) {
     expectAtomicFailure(
@@ -262,7 +238,7 @@ TEST(ExrOutput, UnknownCompressionFailsAtomically) {
 TEST(ExrOutput, FailedRenameLeavesNoTemporaryFile) {
   // The target is a non-empty directory: the image is written to the temporary file, the rename
   // fails, and the temporary file must be removed again.
-  TempDir dir;
+  TempDir dir("io");
   std::string path = dir.path("taken.exr");
   fs::create_directories(fs::path(path) / "inside");
   expectAtomicFailure(dir, path,
@@ -274,7 +250,7 @@ TEST(ExrOutput, FailedRenameLeavesNoTemporaryFile) {
 }
 
 TEST(ExrOutput, UnwritableDirectoryFailsAtomically) {
-  TempDir dir;
+  TempDir dir("io");
   fs::create_directories(dir.path("ro"));
   std::string path = dir.path("ro/out.exr");
   if (::geteuid() == 0) {
@@ -296,7 +272,7 @@ TEST(ExrOutput, UnwritableDirectoryFailsAtomically) {
 }
 
 TEST(ExrOutput, InconsistentBufferFails) {
-  TempDir dir;
+  TempDir dir("io");
   ImageBuffer img = testImage(4, 4, {"R", "G", "B"});
   img.data.pop_back();
   std::string path = dir.path("bad.exr");
@@ -306,7 +282,7 @@ TEST(ExrOutput, InconsistentBufferFails) {
 }
 
 TEST(ExrOutput, OverwriteReplacesExistingFile) {
-  TempDir dir;
+  TempDir dir("io");
   std::string path = dir.path("o.exr");
   writeExr(path, testImage(2, 2, {"R", "G", "B"}), {});
   writeExr(path, testImage(6, 3, {"R", "G", "B", "A"}), {});
@@ -315,7 +291,7 @@ TEST(ExrOutput, OverwriteReplacesExistingFile) {
 }
 
 TEST(ImageRead, MissingOrCorruptFileThrows) {
-  TempDir dir;
+  TempDir dir("io");
   EXPECT_THROW(readImage(dir.path("missing.exr")), FileError);
   std::ofstream(dir.path("garbage.exr"), std::ios::binary) << "this is not an OpenEXR file";
   EXPECT_THROW(readImage(dir.path("garbage.exr")), FileError);
@@ -350,7 +326,7 @@ TEST(OcioColor, DefaultConfigLoads) {
 }
 
 TEST(OcioColor, MissingOrInvalidConfigThrowsFileError) {
-  TempDir dir;
+  TempDir dir("io");
   try {
     ColorManagement cm(dir.path("nope.ocio"));
     ADD_FAILURE() << "no FileError";
@@ -453,7 +429,7 @@ TEST(OcioColor, ChromaticitiesLookup) {
 // --- previews ---------------------------------------------------------------------------------
 
 TEST(PreviewOutput, PngThroughSrgbView) {
-  TempDir dir;
+  TempDir dir("io");
   ColorManagement cm;
   ImageBuffer img(3, 2, {"R", "G", "B", "A"});
   const float values[6] = {0.f, 0.18f, 1.f, 4.f, -1.f, 0.5f};
@@ -472,7 +448,7 @@ TEST(PreviewOutput, PngThroughSrgbView) {
 }
 
 TEST(PreviewOutput, JpegAndErrors) {
-  TempDir dir;
+  TempDir dir("io");
   ColorManagement cm;
   ImageBuffer img = testImage(16, 8, {"R", "G", "B"});
   writePreview(dir.path("p.jpg"), img, cm);

@@ -1,7 +1,8 @@
-// Image texture files through OpenImageIO and OpenColorIO: the default colour-space rule (8-bit
-// files are sRGB-encoded, float files linear), overrides by name or alias, errors naming the
-// path, and an image texture made by the TextureFactory with this loader; light maps, which
-// pbrt-v2/v3 read undecoded, 8-bit files included.
+// Image texture files (OpenEXR through OpenEXR, PNG through the OpenImageIO plug-in, chosen by
+// the file's contents) and OpenColorIO: the default colour-space rule (8-bit files are
+// sRGB-encoded, float files linear), overrides by name or alias, errors naming the path, and an
+// image texture made by the TextureFactory with this loader; light maps, which pbrt-v2/v3 read
+// undecoded, 8-bit files included.
 #include "film/output/texture_loader.h"
 
 #include <gtest/gtest.h>
@@ -17,30 +18,12 @@
 #include "scene/plugin_factories.h"
 #include "scene/texture_factory.h"
 #include "support/param_items.h"
+#include "support/temp_dir.h"
 
 namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("candela-tex-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
- private:
-  fs::path dir_;
-};
 
 // The sRGB decoding (IEC 61966-2-1), written out independently of OCIO.
 double srgbToLinear(double v) {
@@ -81,7 +64,7 @@ TEST(TextureLoader, DefaultRuleByPixelType) {
 }
 
 TEST(TextureLoader, EightBitFilesAreSrgbEncoded) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   std::string png = write128Png(dir, cm);
   ImageBuffer img = loadTextureImage(png, "", cm);
@@ -109,7 +92,7 @@ TEST(TextureLoader, SixteenBitAndGreyIntegerFilesAreSrgbEncoded) {
 }
 
 TEST(TextureLoader, FloatFilesAreLinear) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   std::string exr = dir.path("colour.exr");
   // Channels are looked up by name (EXR stores them sorted); alpha is dropped.
@@ -125,8 +108,22 @@ TEST(TextureLoader, FloatFilesAreLinear) {
   expectAll(loadTextureImage(half, "srgb_texture", cm), decoded, decoded, decoded, 2e-4f);
 }
 
+TEST(TextureLoader, TheFormatIsTheFilesNotTheNames) {
+  // Read by their contents: a PNG named .exr is still 8-bit sRGB, an EXR named .png still float.
+  TempDir dir("tex");
+  ColorManagement cm;
+  const std::string png = std::string(CANDELA_TEST_DATA_DIR) + "/textures/grey8.png";
+  const std::string pngAsExr = dir.path("png.exr");
+  std::filesystem::copy_file(png, pngAsExr);
+  float v8 = float(srgbToLinear(128.0 / 255.0));
+  expectAll(loadTextureImage(pngAsExr, "", cm), v8, v8, v8, 2e-4f);
+  const std::string exrAsPng = dir.path("exr.png");
+  writeExr(exrAsPng, flat(2, 2, {"R", "G", "B"}, {0.5f, 0.25f, 0.125f}), ImageMetadata{});
+  expectAll(loadTextureImage(exrAsPng, "", cm), 0.5f, 0.25f, 0.125f, 0);
+}
+
 TEST(TextureLoader, GreyImagesBecomeGreyRgb) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   std::string exr = dir.path("grey.exr");
   writeExr(exr, flat(2, 2, {"Y"}, {0.75f}), ImageMetadata{});
@@ -134,7 +131,7 @@ TEST(TextureLoader, GreyImagesBecomeGreyRgb) {
 }
 
 TEST(TextureLoader, ErrorsNameThePath) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   auto message = [&](const std::string& path, const std::string& colorSpace) -> std::string {
     try {
@@ -156,7 +153,7 @@ TEST(TextureLoader, ErrorsNameThePath) {
 }
 
 TEST(TextureLoader, ImageTextureThroughTheFactory) {
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   write128Png(dir, cm);
   TextureDesc d;
@@ -184,7 +181,7 @@ TEST(TextureLoader, ImageTextureThroughTheFactory) {
 TEST(LightMaps, EightBitFilesAreReadUndecodedAsPbrtDoes) {
   // pbrt-v3's goniometric and projection lights (and v2's) take an 8-bit image's codes / 255 as
   // they are: code 128 is 0.502, where an image texture decodes it to 0.216.
-  TempDir dir;
+  TempDir dir("tex");
   ColorManagement cm;
   std::string png = write128Png(dir, cm);
   auto load = [&cm](const std::string& path, const std::string& colorSpace) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "support/temp_dir.h"
 
 namespace candela {
 namespace {
@@ -157,29 +158,6 @@ std::string meshWithDoubles(Fmt f) {
   return header + b.str();
 }
 
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("candela-ply-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string write(const std::string& name, const std::string& bytes) const {
-    std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
-
- private:
-  fs::path dir_;
-};
-
 void expectReferenceMesh(const PlyMesh& m) {
   ASSERT_EQ(m.positions.size(), size_t(kVertices));
   ASSERT_EQ(m.normals.size(), size_t(kVertices));
@@ -205,22 +183,22 @@ void expectFileError(const std::string& path, const std::string& what) {
 }
 
 TEST(PlyReader, AsciiFloats) {
-  TempDir dir;
+  TempDir dir("ply");
   expectReferenceMesh(readPly(dir.write("a.ply", meshWithFloats(Fmt::Ascii))));
 }
 
 TEST(PlyReader, BinaryLittleEndianFloats) {
-  TempDir dir;
+  TempDir dir("ply");
   expectReferenceMesh(readPly(dir.write("le.ply", meshWithFloats(Fmt::LittleEndian))));
 }
 
 TEST(PlyReader, BinaryBigEndianFloats) {
-  TempDir dir;
+  TempDir dir("ply");
   expectReferenceMesh(readPly(dir.write("be.ply", meshWithFloats(Fmt::BigEndian))));
 }
 
 TEST(PlyReader, DoublesListsAndExtraElementsInEveryFormat) {
-  TempDir dir;
+  TempDir dir("ply");
   for (Fmt f : {Fmt::Ascii, Fmt::LittleEndian, Fmt::BigEndian}) {
     SCOPED_TRACE(int(f));
     expectReferenceMesh(readPly(dir.write("d.ply", meshWithDoubles(f))));
@@ -262,12 +240,12 @@ TEST(PlyReader, IntegerVertexProperties) {
 }
 
 TEST(PlyReader, MissingFileThrows) {
-  TempDir dir;
+  TempDir dir("ply");
   expectFileError("/nonexistent/candela/mesh.ply", "no such file");
 }
 
 TEST(PlyReader, TruncatedBinaryThrows) {
-  TempDir dir;
+  TempDir dir("ply");
   for (Fmt f : {Fmt::LittleEndian, Fmt::BigEndian}) {
     std::string full = meshWithFloats(f);
     // Cut inside the face data, inside the vertex data and right after the header.
@@ -279,14 +257,14 @@ TEST(PlyReader, TruncatedBinaryThrows) {
 }
 
 TEST(PlyReader, TruncatedAsciiThrows) {
-  TempDir dir;
+  TempDir dir("ply");
   std::string full = meshWithFloats(Fmt::Ascii);
   std::string path = dir.write("t.ply", full.substr(0, full.size() - 12));
   expectFileError(path, "truncated");
 }
 
 TEST(PlyReader, IndexOutOfRangeThrows) {
-  TempDir dir;
+  TempDir dir("ply");
   std::string text =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
@@ -297,7 +275,7 @@ TEST(PlyReader, IndexOutOfRangeThrows) {
 }
 
 TEST(PlyReader, GarbageHeaderThrows) {
-  TempDir dir;
+  TempDir dir("ply");
   expectFileError(dir.write("empty.ply", ""), "header");
   expectFileError(dir.write("text.ply", "hello world\nthis is not a mesh\n"), "header");
   std::string bytes(4096, '\0');
@@ -318,7 +296,7 @@ TEST(PlyReader, GarbageHeaderThrows) {
 }
 
 TEST(PlyReader, UnsupportedContentThrows) {
-  TempDir dir;
+  TempDir dir("ply");
   expectFileError(dir.write("fmt.ply",
                             "ply\nformat binary_middle_endian 1.0\nelement vertex 0\n"
                             "end_header\n"),

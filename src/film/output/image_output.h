@@ -3,8 +3,9 @@
 // image reading. Every writer is atomic: it writes a temporary file next to the target and renames
 // it, so a crash or error never leaves a partial image under the final name.
 //
-// The header names no OpenImageIO or OpenColorIO type, so only candela_io's own sources pay for
-// those headers.
+// OpenEXR goes through the OpenEXR library; previews and other formats through the image plug-in
+// (OpenImageIO), which is loaded only when one is written or read (image_codec.h). The header
+// names no OpenEXR, OpenImageIO or OpenColorIO type.
 #pragma once
 
 #include <array>
@@ -91,11 +92,12 @@ void writePreview(const std::string& path, const ImageBuffer& sceneLinear,
                   const ColorManagement& colorManagement, const std::string& display = "sRGB",
                   const std::string& view = "Standard");
 
-// Reads any image OpenImageIO can read as 32-bit float, with the channel names (and order) the
-// file reports: look channels up by name. If metadata is given, it receives the header's scalar
-// string, float and int attributes under their names; float arrays of up to 16 values (such as
-// "chromaticities") as floats "name[0]", "name[1]"... Throws FileError if the file is missing,
-// unreadable or corrupt.
+// Reads an OpenEXR file, or any image OpenImageIO can read, as 32-bit float, with the channel
+// names the file reports (in an order that may differ by format: look channels up by name). If
+// metadata is given, it receives the header's scalar string, float and int attributes under their
+// names; float arrays of up to 16 values (such as "chromaticities") as floats "name[0]",
+// "name[1]"... Throws FileError if the file is missing, unreadable or corrupt, or when it needs the
+// image plug-in and that cannot be loaded.
 ImageBuffer readImage(const std::string& path, ImageMetadata* metadata = nullptr);
 
 }  // namespace candela

@@ -1,8 +1,9 @@
-// Image files for image textures: any format OpenImageIO reads, converted to scene_linear through
-// OpenColorIO on load (DESIGN.md, Colour). What a file's numbers mean is decided by its pixel type
-// unless the scene says otherwise ("string colorspace" on the texture, an OCIO name, alias or
-// role): integer pixels (8- and 16-bit PNG, JPEG, TIFF...) are sRGB-encoded, floating-point pixels
-// (EXR, HDR, float TIFF) are already scene_linear. OIIO's own colour-space guess is not used.
+// Image files for image textures: OpenEXR, or any format OpenImageIO reads (image_reader.h),
+// converted to scene_linear through OpenColorIO on load (DESIGN.md, Colour). What a file's numbers
+// mean is decided by its pixel type unless the scene says otherwise ("string colorspace" on the
+// texture, an OCIO name, alias or role): integer pixels (8- and 16-bit PNG, JPEG, TIFF...) are
+// sRGB-encoded, floating-point pixels (EXR, HDR, float TIFF) are already scene_linear. OIIO's own
+// colour-space guess is not used.
 #pragma once
 
 #include <string>
