@@ -114,6 +114,23 @@ void warnAboutLostPrecision(const ShapeDesc& sd, const Bounds3f& world, const Wa
   warn(sd.loc, message);
 }
 
+// Triangles of zero area (collinear or repeated vertices) or with a NaN or infinite vertex are
+// never hit and emit nothing (modelling tools leave them behind; pbrt renders on): a warning
+// names the statement and how many, rather than an error or a silent skip.
+void warnAboutDegenerateTriangles(const ShapeDesc& sd, const CreatedShapes& created,
+                                  const WarningSink& warn) {
+  if (!warn || !created.mesh) return;
+  long degenerate = 0;
+  for (const auto& shape : created.shapes)
+    if (const auto* tri = dynamic_cast<const TriangleShape*>(shape.get()))
+      degenerate += tri->degenerate();
+  if (degenerate == 0) return;
+  warn(sd.loc, "shape '" + sd.name + "': " + std::to_string(degenerate) + " of " +
+                   std::to_string(created.mesh->triangleCount()) +
+                   " triangles have zero area or a non-finite vertex; they are skipped (never "
+                   "hit, no light)");
+}
+
 void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* noAreaLight,
               MaterialCache& materials, RenderJob& job, std::vector<Primitive>* out,
               const BuildOptions& options) {
@@ -123,6 +140,7 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* n
   CreatedShapes created =
       createShapes(sd, objectToWorld, *job.textures, options.subdiv, options.hyperboloidNormal);
   reportUnused(sd, warn);
+  warnAboutDegenerateTriangles(sd, created, warn);
   // pbrt 3e cannot sample points on curves either (its Curve::Sample is unimplemented).
   if (sd.name == "curve" && sd.areaLight && allowAreaLight)
     throw SceneError(sd.loc, "curves cannot be area lights (no AreaLightSource on a curve)");
@@ -146,7 +164,8 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* n
   room(job.shapes);
   for (auto& shape : created.shapes) {
     const AreaLight* area = nullptr;
-    if (sd.areaLight && allowAreaLight) {
+    // A shape of zero area emits nothing (its power is L area pi): no light to pick.
+    if (sd.areaLight && allowAreaLight && shape->area() > 0) {
       std::unique_ptr<AreaLight> light = createAreaLight(*sd.areaLight, shape.get());
       area = light.get();
       job.lights.push_back(std::move(light));

@@ -90,11 +90,13 @@ bool intersectTriangle(const Point3f& p0, const Point3f& p1, const Point3f& p2, 
   Float deltaZ = gamma(3) * maxZt;
   Float maxXt = maxComponent(abs(Vector3f(p0t.x, p1t.x, p2t.x)));
   Float maxYt = maxComponent(abs(Vector3f(p0t.y, p1t.y, p2t.y)));
-  // (pbrt 3e uses the scaled z here, which mixes units: the bound then grows or shrinks with
-  // |d|, rejecting real hits of unnormalised rays on small geometry and admitting self-hits on
-  // large geometry.)
-  Float deltaX = gamma(5) * (maxXt + maxZw);
-  Float deltaY = gamma(5) * (maxYt + maxZw);
+  // The shear added sx z and sy z, so their size bounds its error: (pbrt 3e uses the scaled z
+  // here, which mixes units: the bound then grows or shrinks with |d|, rejecting real hits of
+  // unnormalised rays on small geometry and admitting self-hits on large geometry; and without
+  // |sx|, |sy| a ray along an axis, which has no shear, got a bound that rejected every hit on a
+  // sliver of aspect 1e6.)
+  Float deltaX = gamma(5) * (maxXt + std::abs(sx) * maxZw);
+  Float deltaY = gamma(5) * (maxYt + std::abs(sy) * maxZw);
   Float deltaE = 2 * (gamma(2) * maxXt * maxYt + deltaY * maxXt + deltaX * maxYt);
   Float maxE = maxComponent(abs(Vector3f(e0, e1, e2)));
   Float deltaT = 3 * (gamma(3) * maxE * maxZt + deltaE * maxZt + deltaZ * maxE) * std::abs(invDet);
@@ -119,6 +121,51 @@ void vertexUVs(const TriangleMesh& mesh, const int* v, Point2f uv[3]) {
 }
 
 Vector3f absWeighted(Float b, const Point3f& p) { return abs(Vector3f(p)) * std::abs(b); }
+
+// The barycentrics of the ray's crossing of the triangle's plane, in double: the signed volumes
+// d . ((pj - o) x (pk - o)) over their sum (pbrt 3e §3.6.2's edge functions, unsheared; products
+// of floats are exact in double). Float barycentrics, Embree's or the watertight test's, are off
+// by about 1e-7 of the triangle: on a sliver (aspect 1e6) that is a large part of its width, on a
+// triangle far larger than its distance from the origin (a 1e9 ground plane) hundreds of units
+// at the origin. Returns false, leaving b alone, when the crossing lies more than 64 float steps
+// (at the largest coordinate of the vertices and the origin) outside the triangle: a ray in its
+// plane, or a grazing hit that float arithmetic decided.
+bool crossingBarycentrics(const Point3f p[3], const Ray& ray, double b[3]) {
+  double o[3] = {ray.o.x, ray.o.y, ray.o.z}, d[3] = {ray.d.x, ray.d.y, ray.d.z}, a[3][3];
+  double magnitude = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i) {
+      a[k][i] = double(p[k][i]) - o[i];
+      magnitude = std::max(magnitude, std::abs(double(p[k][i])));
+    }
+  auto cross = [](const double* u, const double* v, double* w) {
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+  };
+  auto length = [](const double* w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); };
+  double e[3], edge[3][3], sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double *u = a[(k + 1) % 3], *v = a[(k + 2) % 3];
+    double w[3];
+    cross(u, v, w);
+    e[k] = d[0] * w[0] + d[1] * w[1] + d[2] * w[2];
+    sum += e[k];
+    for (int i = 0; i < 3; ++i) edge[k][i] = v[i] - u[i];
+  }
+  if (!(sum != 0) || !std::isfinite(sum)) return false;
+  double normal[3];
+  cross(edge[2], edge[1], normal);  // (p1 - p0) x (p0 - p2): twice the area in length
+  double twiceArea = length(normal), tolerance = 64 * 0x1p-24 * magnitude, r[3];
+  for (int k = 0; k < 3; ++k) {
+    r[k] = e[k] / sum;
+    // Below 0: outside edge k by -r[k] times the height over it.
+    if (!std::isfinite(r[k]) || (r[k] < 0 && -r[k] * twiceArea > tolerance * length(edge[k])))
+      return false;
+  }
+  for (int k = 0; k < 3; ++k) b[k] = r[k];
+  return true;
+}
 
 }  // namespace
 
@@ -175,11 +222,14 @@ Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2) const {
   return mesh_->reverseOrientation != mesh_->transformSwapsHandedness ? -n : n;
 }
 
-SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1, Float b2,
+SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In,
                                                 Float /*t*/) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
-  Float b0 = 1 - b1 - b2;
+  const Point3f corners[3] = {p0, p1, p2};
+  double b[3] = {1 - double(b1In) - double(b2In), b1In, b2In};
+  crossingBarycentrics(corners, ray, b);
+  Float b0 = Float(b[0]), b1 = Float(b[1]), b2 = Float(b[2]);
   Point2f uv[3];
   vertexUVs(*mesh_, vi, uv);
 
@@ -201,9 +251,13 @@ SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1, Float 
     coordinateSystem(axis, &dpdu, &dpdv);
   }
 
-  // The hit point from barycentrics, with its bound (pbrt 3e §3.9.4: gamma(7) for the
-  // interpolation of Embree's or our b's).
-  Point3f pHit = p0 * b0 + p1 * b1 + p2 * b2;
+  // The hit point from the barycentrics, interpolated in double (float weights would lose what
+  // crossingBarycentrics gained), with the bound of pbrt 3e §3.9.4 for float barycentrics: the
+  // offset that keeps spawned rays clear of the triangle must cover Embree's and the watertight
+  // test's float view of it.
+  Point3f pHit(Float(b[0] * p0.x + b[1] * p1.x + b[2] * p2.x),
+               Float(b[0] * p0.y + b[1] * p1.y + b[2] * p2.y),
+               Float(b[0] * p0.z + b[1] * p1.z + b[2] * p2.z));
   Vector3f pError = (absWeighted(b0, p0) + absWeighted(b1, p1) + absWeighted(b2, p2)) * gamma(7);
   Point2f uvHit = uv[0] * b0 + uv[1] * b1 + uv[2] * b2;
   Vector3f wo = -ray.d;
