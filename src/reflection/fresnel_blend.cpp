@@ -24,9 +24,8 @@ Spectrum FresnelBlend::schlickFresnel(Float cosTheta) const {
 Spectrum FresnelBlend::f(const Vector3f& wo, const Vector3f& wi) const {
   Float cosO = absCosTheta(wo), cosI = absCosTheta(wi);
   Spectrum diffuse = fresnelBlendDiffuse(rd_, rs_, cosO, cosI);
-  Vector3f wh = wi + wo;
-  if (wh.lengthSquared() == 0 || std::max(cosO, cosI) == 0) return diffuse;
-  wh = normalize(wh);
+  Vector3f wh;
+  if (std::max(cosO, cosI) == 0 || !halfVector(wo, wi, &wh)) return diffuse;
   Float hDotI = absDot(wi, wh);
   if (hDotI == 0) return diffuse;
   Spectrum specular =
@@ -61,9 +60,8 @@ Float FresnelBlend::pdf(const Vector3f& wo, const Vector3f& wi) const {
 Spectrum TrowbridgeReitzFresnelBlend::f(const Vector3f& wo, const Vector3f& wi) const {
   Float cosO = absCosTheta(wo), cosI = absCosTheta(wi);
   Spectrum diffuse = fresnelBlendDiffuse(rd_, rs_, cosO, cosI);
-  Vector3f wh = wi + wo;
-  if (wh.lengthSquared() == 0 || std::max(cosO, cosI) == 0) return diffuse;
-  wh = normalize(wh);
+  Vector3f wh;
+  if (std::max(cosO, cosI) == 0 || !halfVector(wo, wi, &wh)) return diffuse;
   Float hDotI = absDot(wi, wh);
   if (hDotI == 0) return diffuse;
   Spectrum specular =

@@ -13,9 +13,8 @@ Float vGrooveG(const Vector3f& wo, const Vector3f& wi, const Vector3f& wh) {
 Spectrum MicrofacetReflection::f(const Vector3f& wo, const Vector3f& wi) const {
   Float cosO = absCosTheta(wo), cosI = absCosTheta(wi);
   if (cosO == 0 || cosI == 0) return Spectrum(0);
-  Vector3f wh = wi + wo;
-  if (wh.lengthSquared() == 0) return Spectrum(0);
-  wh = normalize(wh);
+  Vector3f wh;
+  if (!halfVector(wo, wi, &wh)) return Spectrum(0);
   // The cosine is taken against the half vector turned to +z, so that reflection from inside a
   // dielectric (both directions below) sees a negative cosine: the exiting case, with total
   // internal reflection past the critical angle.

@@ -25,6 +25,12 @@ class MicrofacetDistribution {
   Float pdf(const Vector3f& wo, const Vector3f& wi) const;
 };
 
+// The half vector (wo + wi) / |wo + wi|, normalised in double; false when wi = -wo. The
+// microfacet BxDFs' f and the distributions' pdf take it from here: cos^e theta_h with e up to
+// 1e5 turns a float normalisation's rounding into a relative error of 1e-3, and f and pdf
+// rounding differently made f |cos| / pdf 1.8 for samples of exponent 1e7 (an albedo of 1.39).
+bool halfVector(const Vector3f& wo, const Vector3f& wi, Vector3f* wh);
+
 // Blinn's D = (e + 2) / (2 pi) cos^e theta_h (lrt draft eq. 9.4.9); sampling draws
 // cos theta_h = u^(1 / (e + 1)), density (e + 1) / (2 pi) cos^e theta_h. The draft's roughness r
 // maps to e = 1 / r.
