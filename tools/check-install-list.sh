@@ -23,7 +23,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 manifest=""
 builddir=""
-modules="matplotlib matplotlib.pyplot"
+modules="matplotlib matplotlib.pyplot matplotlib.image PIL xml.etree.ElementTree"
 lists=()
 while [ $# -gt 0 ]; do
   case "$1" in

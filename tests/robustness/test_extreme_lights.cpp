@@ -18,11 +18,13 @@
 namespace candela {
 namespace {
 
-// The scene under each integrator statement; returns the worst pixel in standard errors.
-double worstOverIntegrators(const std::string& scene, const test::PlaneUnderLight& light,
-                            const std::vector<std::string>& integrators) {
+// The scene under directlighting, path and volpath against the closed form; records the worst
+// pixel, in standard errors, under the criterion.
+void checkUnderEachIntegrator(const std::string& scene, const test::PlaneUnderLight& light,
+                              const std::string& criterion) {
   double worst = 0;
-  for (const std::string& integrator : integrators) {
+  for (const char* integrator : {"SurfaceIntegrator \"directlighting\"",
+                                 "SurfaceIntegrator \"path\"", "Integrator \"volpath\""}) {
     std::string text = test::robustnessScene(scene);
     test::replaceOnce(&text, "SurfaceIntegrator \"directlighting\"", integrator);
     test::RenderedScene r = test::renderSceneText(text);
@@ -30,21 +32,17 @@ double worstOverIntegrators(const std::string& scene, const test::PlaneUnderLigh
     worst = std::max(worst,
                      test::worstPixelAgainstClosedForm(r.film(), light, scene + ", " + integrator));
   }
-  return worst;
+  test::recordFigure(criterion +
+                         " (directlighting, path, volpath): finite, every pixel within 5 "
+                         "standard errors of the closed form",
+                     "finite; worst pixel %.2f standard errors", worst);
 }
 
 TEST(ExtremeLights, ASphereLightOfRadiusOneHundredThousandthAndRadiance1e10GivesTheClosedForm) {
   test::PlaneUnderLight light;
   light.intensity = M_PI * 1e10 * 1e-5 * 1e-5;  // pi L r^2
-  double worst = worstOverIntegrators("tiny-sphere-light.pbrt", light,
-                                      {"SurfaceIntegrator \"directlighting\"",
-                                       "SurfaceIntegrator \"path\"", "Integrator \"volpath\""});
-  char measured[80];
-  std::snprintf(measured, sizeof measured, "finite; worst pixel %.2f standard errors", worst);
-  test::recordFigure(
-      "sphere light radius 1e-5, L 1e10, 1 above a plane (directlighting, path, "
-      "volpath): finite, every pixel within 5 standard errors of the closed form",
-      measured);
+  checkUnderEachIntegrator("tiny-sphere-light.pbrt", light,
+                           "sphere light radius 1e-5, L 1e10, 1 above a plane");
 }
 
 TEST(ExtremeLights, APointLightOfIntensity1e6OneTenThousandthAboveAPlaneGivesTheClosedForm) {
@@ -52,16 +50,8 @@ TEST(ExtremeLights, APointLightOfIntensity1e6OneTenThousandthAboveAPlaneGivesThe
   light.intensity = 1e6;
   light.height = 1e-4;
   light.halfWidth = 2e-4;
-  double worst = worstOverIntegrators("bright-point-light.pbrt", light,
-                                      {"SurfaceIntegrator \"directlighting\"",
-                                       "SurfaceIntegrator \"path\"", "Integrator \"volpath\""});
-  char measured[80];
-  std::snprintf(measured, sizeof measured, "finite; worst pixel %.2f standard errors", worst);
-  test::recordFigure(
-      "point light I 1e6, 1e-4 above a plane (radiance to 1.6e13; "
-      "directlighting, path, volpath): finite, every pixel within 5 standard "
-      "errors of the closed form",
-      measured);
+  checkUnderEachIntegrator("bright-point-light.pbrt", light,
+                           "point light I 1e6, 1e-4 above a plane (radiance to 1.6e13)");
 }
 
 }  // namespace

@@ -146,15 +146,12 @@ TEST(GrazingRays, TangentToSpheresHitExactlyWhenTheLinePassesInside) {
         if (b.lo == -1e-9L) nearRays += b.rays, nearHits += b.hits;
     }
   }
-  char measured[160];
-  std::snprintf(measured, sizeof measured,
-                "%ld wrong of %ld; within 1e-9 of tangency %ld of %ld hit; hit distance within "
-                "%.2g radii",
-                wrong, total, nearHits, nearRays, worstT);
   test::recordFigure(
       "rays tangent to spheres (radius 1e-6..1e6, at 1e5; 4 accelerators): hit iff the line "
       "passes inside, for gaps >= 1e-9 of the radius",
-      measured);
+      "%ld wrong of %ld; within 1e-9 of tangency %ld of %ld hit; hit distance within "
+      "%.2g radii",
+      wrong, total, nearHits, nearRays, worstT);
 }
 
 // ---- Triangles --------------------------------------------------------------------------------
