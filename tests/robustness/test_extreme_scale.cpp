@@ -79,6 +79,8 @@ TEST(ExtremeScale, AHitherThatClipsEverythingIsReported) {
   warnings.clear();
   test::renderSceneText(scaledBox("1e-7"), options);
   EXPECT_EQ(warnings.find("leaves out every object"), std::string::npos) << warnings;
+  test::recordFigure("Cornell box scaled by 1e-7 with the lrt draft's hither 1e-3: a warning",
+                     "image mean %g; warned", mean);
 }
 
 // The box moved (camera and world together) by 1e3 and 1e5 along each axis: the mean of the box
@@ -146,6 +148,8 @@ TEST(ExtremeScale, AShapeFloatsCannotResolveIsReported) {
           << message;
     }
   EXPECT_EQ(precision, 1);
+  test::recordFigure("a unit sphere at 1e7: a warning naming it and the float spacing there",
+                     "%d warning, at its statement", precision);
 }
 
 TEST(ExtremeScale, GeometryAtTheEndOfFloatRangeRendersFiniteUnderEveryAccelerator) {
@@ -170,6 +174,10 @@ TEST(ExtremeScale, GeometryAtTheEndOfFloatRangeRendersFiniteUnderEveryAccelerato
       ImageBuffer image = r.film().image();
       for (float v : image.data) ASSERT_TRUE(std::isfinite(v));
     }
+  test::recordFigure(
+      "a sphere of radius 3e38 in an instance, a triangle at +-3.4e38: every pixel "
+      "finite under the 4 accelerators",
+      std::string("finite"));
 }
 
 }  // namespace

@@ -145,7 +145,8 @@ TEST(ExtremeTriangles, HitsOnSliversAndHugeTrianglesAreAsPreciseAsFloats) {
       std::printf("%s, normal %.2g rad\n", summary(c.name, accel, f).c_str(), f.worstNormal);
       worstPoint = std::max(worstPoint, f.worstPoint);
       worstBary = std::max(worstBary, f.worstBary);
-      if (!c.everyRayHits && c.name == "sliver, rotated")
+      if (!c.everyRayHits && c.name == "sliver, rotated" &&
+          (std::string(accel) == "embree" || std::string(accel) == "bvh"))
         figures += "; " + c.name + ", " + accel + ": " + std::to_string(f.hits) + "/" +
                    std::to_string(f.rays) + " hit";
     }
@@ -241,7 +242,8 @@ TEST(ExtremeTriangles, ZeroAreaTrianglesAreSkippedWithAWarningNamingTheStatement
   test::recordFigure(
       "a mesh with 3 zero-area triangles of 4, as an area light, under 4 "
       "integrators: one warning at its statement, 1 light, no non-finite sample",
-      std::to_string(reported) + " warnings, " + std::to_string(lights) + " light, 0 non-finite");
+      "1 warning in each of " + std::to_string(reported) + " renders, " + std::to_string(lights) +
+          " light, 0 non-finite");
 }
 
 // What pbrt-v3 reports for a singular matrix (and then renders with infinities) is here an error
