@@ -3,29 +3,24 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 
 #include "core/error.h"
+#include "core/read_file.h"
 
 namespace candela {
 
-void readNumberLines(const std::string& path,
-                     const std::function<void(int line, const std::vector<double>&)>& onLine) {
-  if (path.find('\0') != std::string::npos)
-    throw FileError(path.substr(0, path.find('\0')), "NUL in file name");
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw FileError(path,
-                    std::filesystem::exists(path, ec) ? "not a regular file" : "no such file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open file");
-  std::string line;
+void parseNumberLines(std::string_view text, const std::string& path,
+                      const NumberLineCallback& onLine) {
   std::vector<double> numbers;
   int lineNo = 0;
-  while (std::getline(in, line)) {
+  size_t lineStart = 0;
+  while (lineStart < text.size()) {
+    size_t lineEnd = text.find('\n', lineStart);
+    if (lineEnd == std::string_view::npos) lineEnd = text.size();
+    std::string_view line = text.substr(lineStart, lineEnd - lineStart);
+    lineStart = lineEnd + 1;
     ++lineNo;
-    if (size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    if (size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
     numbers.clear();
     size_t i = 0;
     while (i < line.size()) {
@@ -40,13 +35,16 @@ void readNumberLines(const std::string& path,
       auto [ptr, err] = std::from_chars(first, line.data() + end, v);
       if (err != std::errc() || ptr != line.data() + end || !(std::abs(v) <= 3.4e38))
         throw FileError(path, "line " + std::to_string(lineNo) + ": expected a number, found '" +
-                                  line.substr(i, std::min<size_t>(end - i, 40)) + "'");
+                                  std::string(line.substr(i, std::min<size_t>(end - i, 40))) + "'");
       numbers.push_back(v);
       i = end;
     }
     if (!numbers.empty()) onLine(lineNo, numbers);
   }
-  if (in.bad()) throw FileError(path, "read error");
+}
+
+void readNumberLines(const std::string& path, const NumberLineCallback& onLine) {
+  parseNumberLines(readWholeFile(path), path, onLine);
 }
 
 }  // namespace candela

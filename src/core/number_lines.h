@@ -5,14 +5,20 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace candela {
 
-// Calls onLine(line number, its numbers) for each line that holds any, in order. Throws FileError
-// naming the path when the file is missing, not a regular file (a device would never end) or
-// unreadable, and with the line for a token that is not a number within float range.
-void readNumberLines(const std::string& path,
-                     const std::function<void(int line, const std::vector<double>&)>& onLine);
+using NumberLineCallback = std::function<void(int line, const std::vector<double>&)>;
+
+// Calls onLine(line number, its numbers) for each line of text that holds any, in order. Throws
+// FileError naming path and the line for a token that is not a number within float range.
+void parseNumberLines(std::string_view text, const std::string& path,
+                      const NumberLineCallback& onLine);
+
+// The same for the file at path; FileError also when it is missing, not a regular file (a device
+// would never end) or unreadable.
+void readNumberLines(const std::string& path, const NumberLineCallback& onLine);
 
 }  // namespace candela

@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "core/error.h"
+#include "core/read_file.h"
 
 namespace candela {
 
@@ -17,13 +16,8 @@ struct Number {
   int line;
 };
 
-// Every number of the file with its line; '#' comments run to the end of the line.
-std::vector<Number> readNumbers(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open the measured BRDF file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+// Every number of the text with its line; '#' comments run to the end of the line.
+std::vector<Number> readNumbers(std::string_view text, const std::string& path) {
   std::vector<Number> numbers;
   int line = 1;
   size_t i = 0;
@@ -45,8 +39,8 @@ std::vector<Number> readNumbers(const std::string& path) {
       const char* first = text.data() + i + (text[i] == '+' ? 1 : 0);
       auto [ptr, ec] = std::from_chars(first, text.data() + end, v);
       if (ec != std::errc() || ptr != text.data() + end || !std::isfinite(v))
-        throw FileError(path, "line " + std::to_string(line) + ": '" + text.substr(i, end - i) +
-                                  "' is not a number");
+        throw FileError(path, "line " + std::to_string(line) + ": '" +
+                                  std::string(text.substr(i, end - i)) + "' is not a number");
       numbers.push_back({v, line});
       i = end;
     }
@@ -108,7 +102,12 @@ IrregularBrdfEstimate IrregularBrdfTable::estimate(const Vector3f& wo, const Vec
 }
 
 IrregularBrdfTable readIrregularBrdf(const std::string& path, const SpectrumToRGB& toRGB) {
-  std::vector<Number> numbers = readNumbers(path);
+  return parseIrregularBrdf(readWholeFile(path), path, toRGB);
+}
+
+IrregularBrdfTable parseIrregularBrdf(std::string_view text, const std::string& path,
+                                      const SpectrumToRGB& toRGB) {
+  std::vector<Number> numbers = readNumbers(text, path);
   if (numbers.empty()) throw FileError(path, "no data in the measured BRDF file");
   double nw = numbers[0].value;
   if (nw < 1 || nw > 10000 || nw != std::floor(nw))

@@ -10,6 +10,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "reflection/bxdf.h"
@@ -67,6 +68,9 @@ using SpectrumToRGB =
 // Reads a pbrt-v2 .brdf text file; throws FileError naming the path (and the record) when it
 // cannot be read or is malformed. Out-of-gamut (negative) RGB values are kept: lookups clamp.
 IrregularBrdfTable readIrregularBrdf(const std::string& path, const SpectrumToRGB& toRGB);
+// The same from the file's text; path is used only in error messages.
+IrregularBrdfTable parseIrregularBrdf(std::string_view text, const std::string& path,
+                                      const SpectrumToRGB& toRGB);
 
 // The table as a BxDF, sampled by the default cosine-weighted hemisphere as in pbrt 2e.
 class IrregularMeasuredBRDF : public BxDF {

@@ -1,11 +1,14 @@
 #include "reflection/merl_brdf.h"
 
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/read_file.h"
 
 namespace candela {
 
@@ -73,22 +76,22 @@ Spectrum MerlBrdfTable::lookup(const Vector3f& wo, const Vector3f& wi) const {
 }
 
 MerlBrdfTable readMerlBrdf(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open the measured BRDF file");
+  return parseMerlBrdf(readWholeFile(path), path);
+}
+
+MerlBrdfTable parseMerlBrdf(std::string_view bytes, const std::string& path) {
   int32_t dims[3];
-  if (!readHeader(in, dims)) throw FileError(path, "too short for a MERL BRDF header");
+  if (bytes.size() < sizeof dims) throw FileError(path, "too short for a MERL BRDF header");
+  std::memcpy(dims, bytes.data(), sizeof dims);
   if (!validDims(dims))
     throw FileError(path, "MERL BRDF header has invalid dimensions " + std::to_string(dims[0]) +
                               " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]));
-  std::error_code ec;
-  uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size != expectedSize(dims))
+  if (bytes.size() != expectedSize(dims))
     throw FileError(path, "MERL BRDF file size does not match its header (expected " +
                               std::to_string(expectedSize(dims)) + " bytes)");
   size_t n = size_t(dims[0]) * size_t(dims[1]) * size_t(dims[2]);
   std::vector<double> rgb(3 * n);
-  if (!in.read(reinterpret_cast<char*>(rgb.data()), std::streamsize(rgb.size() * sizeof(double))))
-    throw FileError(path, "MERL BRDF data is truncated");
+  std::memcpy(rgb.data(), bytes.data() + sizeof dims, rgb.size() * sizeof(double));
   const double scale[3] = {MerlBrdfTable::kRedScale, MerlBrdfTable::kGreenScale,
                            MerlBrdfTable::kBlueScale};
   for (int c = 0; c < 3; ++c)

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "reflection/bxdf.h"
@@ -47,6 +48,8 @@ class MerlBrdfTable {
 // Reads a MERL binary file; throws FileError naming the path when it cannot be read or its size
 // does not match its header.
 MerlBrdfTable readMerlBrdf(const std::string& path);
+// The same from the file's bytes; path is used only in error messages.
+MerlBrdfTable parseMerlBrdf(std::string_view bytes, const std::string& path);
 // True when the file starts with three positive dimensions whose tables fill exactly the rest of
 // the file: how a "measured" material tells the binary format from pbrt-v2's text format.
 bool isMerlBrdfFile(const std::string& path);

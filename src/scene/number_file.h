@@ -5,12 +5,16 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace candela {
 
-// Every number of the file at path, in order. Throws FileError (naming the path, and the line
-// for a token that is not a finite number) when the file is missing, not a regular file, or
+// Every number of text, in order. Throws FileError naming path and the line for a token that is
+// not a finite number.
+std::vector<double> parseNumberFile(std::string_view text, const std::string& path);
+
+// The same for the file at path; FileError also when it is missing, not a regular file, or
 // unreadable.
 std::vector<double> readNumberFile(const std::string& path);
 

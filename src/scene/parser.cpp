@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <iterator>
 #include <sstream>
@@ -10,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/read_file.h"
 #include "scene/spectrum_input.h"
 #include "scene/tokenizer.h"
 
@@ -126,22 +126,6 @@ const std::unordered_map<std::string_view, Directive>& directives() {
   return table;
 }
 
-// Reads a whole regular file; throws FileError (devices and directories are refused, so that
-// "Include "/dev/zero"" cannot hang the parser).
-std::string readWholeFile(const std::string& path) {
-  if (path.find('\0') != std::string::npos) throw FileError(printable(path), "NUL in file name");
-  std::error_code ec;
-  fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw FileError(path, "no such file");
-  if (fs::is_directory(st)) throw FileError(path, "is a directory, not a scene file");
-  if (!fs::is_regular_file(st)) throw FileError(path, "not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw FileError(path, "read error");
-  return text;
-}
-
 // A path written in a file, taken relative to that file's directory.
 std::string resolveRelative(const std::string& written, const std::string& referringFile) {
   fs::path p(written);
@@ -163,10 +147,11 @@ struct RawValues {
 
 class Parser {
  public:
-  Parser(ParserTarget& target, const WarningCallback& warn) : target_(target), warn_(warn) {}
+  Parser(ParserTarget& target, const WarningCallback& warn, const SceneFileReader& readFile)
+      : target_(target), warn_(warn), readFile_(readFile) {}
 
   void parseText(const std::string& text, const std::string& filename) {
-    std::string key = filename == "-" ? std::string("-") : canonicalKey(filename);
+    std::string key = filename == "-" ? std::string("-") : fileKey(filename);
     includeStack_.push_back(key);
     Tokenizer tok(text, filename);
     while (statement(tok)) {
@@ -228,7 +213,7 @@ class Parser {
     Token nameTok = tok.peek();
     std::string written = quoted(tok, directive, "a file name");
     std::string path = resolveRelative(written, tok.filename());
-    std::string key = canonicalKey(path);
+    std::string key = fileKey(path);
     for (const std::string& open : includeStack_)
       if (open == key)
         throw SceneError(nameTok.loc, "include cycle: '" + printable(written, 200) +
@@ -241,7 +226,7 @@ class Parser {
                                         " files deep");
     std::string text;
     try {
-      text = readWholeFile(path);
+      text = read(path);
     } catch (const FileError& e) {
       throw SceneError(nameTok.loc, "cannot read included file: " + std::string(e.what()));
     }
@@ -252,12 +237,23 @@ class Parser {
     includeStack_.pop_back();
   }
 
+  // The contents of a file the scene names, through the caller's reader when there is one.
+  std::string read(const std::string& path) const {
+    return readFile_ ? readFile_(path) : readWholeFile(path);
+  }
+  // What identifies a file in the include stack: its canonical path on the filesystem; files of
+  // a caller's reader are named by their lexically normal path (the filesystem is not asked).
+  std::string fileKey(const std::string& path) const {
+    return readFile_ ? fs::path(path).lexically_normal().string() : canonicalKey(path);
+  }
+
   ParamSet params(Tokenizer& tok);
   void parameter(Tokenizer& tok, ParamSet& ps);
   void dispatch(Directive d, const Token& t, Tokenizer& tok);
 
   ParserTarget& target_;
   const WarningCallback& warn_;
+  const SceneFileReader& readFile_;
   std::vector<std::string> includeStack_;  // canonical paths of the files being parsed
   int includeCount_ = 0;
 };
@@ -421,7 +417,7 @@ void Parser::parameter(Tokenizer& tok, ParamSet& ps) {
           std::string path = resolveRelative(expectString(v), tok.filename());
           std::vector<SpectrumSample> samples;
           try {
-            samples = readSpectrumFile(path);
+            samples = parseSpectrumFile(read(path), path);
           } catch (const FileError& e) {
             throw SceneError(v.loc, "cannot read spectrum of " + what + ": " + e.what());
           }
@@ -648,12 +644,12 @@ void parseFile(const std::string& path, ParserTarget& target, const WarningCallb
   } else {
     text = readWholeFile(path);
   }
-  Parser(target, warn).parseText(text, path);
+  Parser(target, warn, {}).parseText(text, path);
 }
 
 void parseString(const std::string& text, const std::string& filename, ParserTarget& target,
-                 const WarningCallback& warn) {
-  Parser(target, warn).parseText(text, filename);
+                 const WarningCallback& warn, const SceneFileReader& readFile) {
+  Parser(target, warn, readFile).parseText(text, filename);
 }
 
 }  // namespace candela

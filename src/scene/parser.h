@@ -16,6 +16,10 @@
 namespace candela {
 
 using WarningCallback = std::function<void(const FileLoc&, const std::string&)>;
+// Returns the whole contents of a file a scene names (Include, Import, "spectrum" files), given
+// its path resolved against the naming file's directory; throws FileError naming the path when
+// there is no such file.
+using SceneFileReader = std::function<std::string(const std::string& path)>;
 
 // Parses one file ("-" = standard input) into target. Include/Import paths and spectrum files are
 // relative to the directory of the file that names them. Several files in sequence are several
@@ -24,8 +28,9 @@ using WarningCallback = std::function<void(const FileLoc&, const std::string&)>;
 void parseFile(const std::string& path, ParserTarget& target, const WarningCallback& warn = {});
 
 // Parses text as if it were the contents of a file called filename (used in locations and to
-// resolve relative paths).
+// resolve relative paths). The files it names are read by readFile when given (the fuzzer and
+// tests serve them from memory), else from the filesystem.
 void parseString(const std::string& text, const std::string& filename, ParserTarget& target,
-                 const WarningCallback& warn = {});
+                 const WarningCallback& warn = {}, const SceneFileReader& readFile = {});
 
 }  // namespace candela

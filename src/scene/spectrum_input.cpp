@@ -7,6 +7,7 @@
 
 #include "core/cie_data.h"
 #include "core/error.h"
+#include "core/read_file.h"
 #include "scene/number_file.h"
 
 namespace candela {
@@ -177,8 +178,8 @@ Spectrum blackbodyToRGB(Float kelvin, Float scale) {
   return xyzToRGB(xyz, SpectrumUse::Illuminant);
 }
 
-std::vector<SpectrumSample> readSpectrumFile(const std::string& path) {
-  std::vector<double> numbers = readNumberFile(path);
+std::vector<SpectrumSample> parseSpectrumFile(std::string_view text, const std::string& path) {
+  std::vector<double> numbers = parseNumberFile(text, path);
   if (numbers.empty()) throw FileError(path, "spectrum file has no values");
   if (numbers.size() % 2 != 0)
     throw FileError(path, "spectrum file has an odd number of values (" +
@@ -188,6 +189,10 @@ std::vector<SpectrumSample> readSpectrumFile(const std::string& path) {
   for (size_t i = 0; i < numbers.size(); i += 2)
     samples.push_back({Float(numbers[i]), Float(numbers[i + 1])});
   return samples;
+}
+
+std::vector<SpectrumSample> readSpectrumFile(const std::string& path) {
+  return parseSpectrumFile(readWholeFile(path), path);
 }
 
 }  // namespace candela

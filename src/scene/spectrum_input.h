@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/spectrum.h"
@@ -40,5 +41,7 @@ Spectrum blackbodyToRGB(Float kelvin, Float scale);
 // Reads a two-column "wavelength value" file ('#' starts a comment; whitespace or commas separate
 // numbers). Throws FileError naming the path (and line) when unreadable or malformed.
 std::vector<SpectrumSample> readSpectrumFile(const std::string& path);
+// The same from the file's text; path is used only in error messages.
+std::vector<SpectrumSample> parseSpectrumFile(std::string_view text, const std::string& path);
 
 }  // namespace candela

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "scene/parser.h"
@@ -348,6 +349,36 @@ TEST(Parser, IncludeAndImport) {
   EXPECT_EQ(r.calls[1], "shape sphere @" + (dir.path / "geometry/a.pbrt").string() + ":1:1");
   EXPECT_EQ(r.calls[2], "shape disk @" + (dir.path / "geometry/b.pbrt").string() + ":1:1");
   EXPECT_EQ(r.calls[3], "shape disk @" + (dir.path / "geometry/b.pbrt").string() + ":1:1");
+}
+
+// A caller's reader serves the files a scene names (the parser fuzzer's in-memory files): paths
+// reach it resolved against the naming file, and cycles are found by path without the filesystem.
+TEST(Parser, NamedFilesComeFromTheCallersReader) {
+  std::map<std::string, std::string> files = {
+      {"/mem/geometry/a.pbrt", "Material \"metal\" \"spectrum eta\" \"../flat.spd\"\n"},
+      {"/mem/flat.spd", "300 2\n900 2\n"},
+      {"/mem/loop.pbrt", "Include \"./geometry/../loop.pbrt\""}};
+  std::vector<std::string> asked;
+  SceneFileReader read = [&](const std::string& path) {
+    asked.push_back(path);
+    auto it = files.find(path);
+    if (it == files.end()) throw FileError(path, "no such file");
+    return it->second;
+  };
+  Recorder r;
+  parseString("Include \"geometry/a.pbrt\"\n", "/mem/main.pbrt", r, {}, read);
+  ASSERT_EQ(r.params.size(), 1u);
+  EXPECT_NEAR(r.params[0].getOneSpectrum("eta", Spectrum()).g(), 2, 0.04);
+  EXPECT_EQ(asked, (std::vector<std::string>{"/mem/geometry/a.pbrt", "/mem/flat.spd"}));
+  try {
+    parseString("Include \"loop.pbrt\"", "/mem/main.pbrt", r, {}, read);
+    FAIL() << "expected an include cycle error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("/mem/loop.pbrt:1:9: error: include cycle"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(parseString("Include \"none.pbrt\"", "/mem/main.pbrt", r, {}, read), SceneError);
 }
 
 TEST(Parser, OptionIsAcceptedWithAWarning) {
