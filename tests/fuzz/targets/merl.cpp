@@ -1,0 +1,26 @@
+#include <cmath>
+#include <optional>
+
+#include "core/error.h"
+#include "fuzz/targets/fuzz_targets.h"
+#include "fuzz/targets/lookup_directions.h"
+#include "reflection/merl_brdf.h"
+
+namespace candela::fuzz {
+
+// A table the reader accepts gives finite, non-negative values for every pair of directions.
+void merl(std::string_view input) {
+  std::optional<MerlBrdfTable> table;
+  try {
+    table = parseMerlBrdf(input, "fuzz.merl");
+  } catch (const FileError&) {
+    return;
+  }
+  for (const auto& [wo, wi] : lookupDirections()) {
+    Spectrum f = table->lookup(wo, wi);
+    for (int c = 0; c < 3; ++c)
+      if (!(f[c] >= 0) || !std::isfinite(f[c])) broken("a MERL lookup is negative or not finite");
+  }
+}
+
+}  // namespace candela::fuzz
