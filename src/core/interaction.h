@@ -7,7 +7,7 @@
 
 namespace candela {
 
-class Primitive;
+struct Primitive;
 class BSDF;
 
 struct Interaction {

@@ -17,9 +17,10 @@ inline constexpr std::array<uint32_t, kPrimeTableSize> kPrimes = [] {
   std::array<uint32_t, kPrimeTableSize> primes{};
   int count = 0;
   for (uint32_t candidate = 2; count < kPrimeTableSize; ++candidate) {
+    // Stopping at the first divisor keeps the evaluation within clang's constexpr step limit.
     bool prime = true;
-    for (int i = 0; i < count && primes[i] * primes[i] <= candidate; ++i)
-      if (candidate % primes[i] == 0) prime = false;
+    for (int i = 0; prime && i < count && primes[i] * primes[i] <= candidate; ++i)
+      prime = candidate % primes[i] != 0;
     if (prime) primes[count++] = candidate;
   }
   return primes;

@@ -158,7 +158,7 @@ std::vector<SubsurfacePoint> readSubsurfacePointsFile(const std::string& path, c
   for (size_t i = 0; i < v.size(); i += 8) {
     SubsurfacePoint sp;
     sp.p = Point3f(Float(v[i]), Float(v[i + 1]), Float(v[i + 2]));
-    Normal3f n(Float(v[i + 3]), Float(v[i + 4]), Float(v[i + 5]));
+    Normal3f n = Normal3f(Float(v[i + 3]), Float(v[i + 4]), Float(v[i + 5]));
     Float area = Float(v[i + 6]), offset = Float(v[i + 7]);
     std::string which = "point " + std::to_string(i / 8 + 1) + ": ";
     if (!(n.lengthSquared() > 0)) fail(which + "zero normal");
