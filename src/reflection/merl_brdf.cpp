@@ -23,7 +23,10 @@ bool readHeader(std::ifstream& in, int32_t dims[3]) {
 
 bool validDims(const int32_t dims[3]) {
   if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0) return false;
-  return int64_t(dims[0]) * dims[1] * dims[2] <= kMaxCells;
+  // Two factors below 2^31 fit in int64, and so does that product (if at most kMaxCells) times
+  // the third; three at once may not (2^21 x 2^21 x 2^22 wraps to 0).
+  int64_t twoDims = int64_t(dims[0]) * dims[1];
+  return twoDims <= kMaxCells && twoDims * dims[2] <= kMaxCells;
 }
 
 uintmax_t expectedSize(const int32_t dims[3]) {

@@ -131,6 +131,29 @@ TEST(MeasuredBRDF, MerlErrorsNameTheFile) {
   fs::remove(p);
 }
 
+// Found by fuzz_merl: dimensions whose product wraps around 64 bits (2^21 x 2^21 x 2^22 = 2^64)
+// made a 12-byte header-only file a valid empty table that lookups read past.
+TEST(MeasuredBRDF, MerlDimensionsWhoseProductWrapsAreRefused) {
+  const int32_t dims[3] = {1 << 21, 1 << 21, 1 << 22};
+  std::string bytes(reinterpret_cast<const char*>(dims), sizeof dims);
+  try {
+    parseMerlBrdf(bytes, "wrap.merl");
+    ADD_FAILURE() << "no error";
+  } catch (const FileError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("wrap.merl: error: MERL BRDF header has invalid dimensions"),
+        std::string::npos)
+        << e.what();
+  }
+  fs::path p = tempPath("wrap.merl");
+  {
+    std::ofstream out(p, std::ios::binary | std::ios::trunc);
+    out << bytes;
+  }
+  EXPECT_FALSE(isMerlBrdfFile(p.string()));
+  fs::remove(p);
+}
+
 // Spectral values to RGB the way the scene reader converts reflectances.
 Spectrum toRGB(std::span<const Float> lambda, std::span<const Float> values) {
   std::vector<SpectrumSample> s;
@@ -159,6 +182,22 @@ TEST(MeasuredBRDF, IrregularTextFormatParses) {
   EXPECT_GE(f[1], 0.1f - 1e-3f);
   EXPECT_LE(f[1], 0.4f + 1e-3f);
   fs::remove(p);
+}
+
+// A record whose values give an infinite colour (1e300 is a finite double) is refused: lookups
+// would average it into infinity or NaN.
+TEST(MeasuredBRDF, IrregularValuesBeyondTheFloatRangeAreRefused) {
+  try {
+    parseIrregularBrdf("1\n550\n0 0 0 0 0.5\n0.5 0 0.5 1 1e300\n", "big.brdf", toRGB);
+    ADD_FAILURE() << "no error";
+  } catch (const FileError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find(
+            "big.brdf: error: line 4: the record's values give a colour beyond the float range"),
+        std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(parseIrregularBrdf("1\n550\n0 0 0 0 1e30\n", "ok.brdf", toRGB).samples().size(), 1u);
 }
 
 TEST(MeasuredBRDF, IrregularErrorsNameTheFileAndLine) {
