@@ -139,7 +139,13 @@ IrregularBrdfTable parseIrregularBrdf(std::string_view text, const std::string& 
       throw FileError(path, "line " + std::to_string(numbers[r].line) +
                                 ": polar angles must lie in [0, pi/2] radians");
     for (size_t i = 0; i < nLambda; ++i) values[i] = Float(numbers[r + 4 + i].value);
-    samples.push_back({direction(thetaI, phiI), direction(thetaO, phiO), toRGB(lambda, values)});
+    Spectrum rgb = toRGB(lambda, values);
+    // Values beyond float's range (the reader takes any finite double) or near its limit give
+    // an infinite colour, which lookups would average into infinity or NaN.
+    if (!std::isfinite(rgb[0]) || !std::isfinite(rgb[1]) || !std::isfinite(rgb[2]))
+      throw FileError(path, "line " + std::to_string(numbers[r].line) +
+                                ": the record's values give a colour beyond the float range");
+    samples.push_back({direction(thetaI, phiI), direction(thetaO, phiO), rgb});
   }
   return IrregularBrdfTable(std::move(samples));
 }

@@ -359,6 +359,14 @@ void Parser::parameter(Tokenizer& tok, ParamSet& ps) {
                                      " numbers, found " + std::to_string(n));
   };
   SpectrumUse use = spectrumUseForParameter(name);
+  // Spectral values near float's limit can give a colour beyond it (a constant 3.3e38 spectrum
+  // is white beyond 3.4e38), which would be infinite in every later computation.
+  auto addColour = [&](const Spectrum& s, const FileLoc& loc) {
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(s[c]))
+        throw SceneError(loc, what + " gives a colour beyond the float range");
+    item.floats.insert(item.floats.end(), {s[0], s[1], s[2]});
+  };
 
   switch (info.type) {
     case ParamType::Integer:
@@ -391,8 +399,7 @@ void Parser::parameter(Tokenizer& tok, ParamSet& ps) {
         for (const Token& v : values) f.push_back(Float(expectNumber(v)));
         needMultiple(f.size(), 3);
         for (size_t i = 0; i < f.size(); i += 3) {
-          Spectrum s = Spectrum::fromXYZ(f[i], f[i + 1], f[i + 2]);
-          item.floats.insert(item.floats.end(), {s[0], s[1], s[2]});
+          addColour(Spectrum::fromXYZ(f[i], f[i + 1], f[i + 2]), values[i].loc);
         }
       } else if (typeName == "blackbody") {
         // pbrt-v2: pairs (temperature K, scale); pbrt-v3: one temperature.
@@ -408,8 +415,7 @@ void Parser::parameter(Tokenizer& tok, ParamSet& ps) {
           if (!(f[i] > 0))
             throw SceneError(values[i].loc, what + " needs a temperature above 0 K, found " +
                                                 describeToken(values[i]));
-          Spectrum s = blackbodyToRGB(f[i], f[i + 1]);
-          item.floats.insert(item.floats.end(), {s[0], s[1], s[2]});
+          addColour(blackbodyToRGB(f[i], f[i + 1]), values[i].loc);
         }
       } else if (!values.empty() && values[0].kind == TokenKind::String) {
         // "spectrum" "file.spd": one spectrum per file.
@@ -421,8 +427,7 @@ void Parser::parameter(Tokenizer& tok, ParamSet& ps) {
           } catch (const FileError& e) {
             throw SceneError(v.loc, "cannot read spectrum of " + what + ": " + e.what());
           }
-          Spectrum s = spectrumSamplesToRGB(std::move(samples), use);
-          item.floats.insert(item.floats.end(), {s[0], s[1], s[2]});
+          addColour(spectrumSamplesToRGB(std::move(samples), use), v.loc);
         }
       } else if (!values.empty()) {
         // "spectrum" [ λ v λ v ... ]: one spectrum.
@@ -433,8 +438,7 @@ void Parser::parameter(Tokenizer& tok, ParamSet& ps) {
                                          std::to_string(values.size()) + " numbers");
         for (size_t i = 0; i < values.size(); i += 2)
           samples.push_back({Float(values[i].number), Float(values[i + 1].number)});
-        Spectrum s = spectrumSamplesToRGB(std::move(samples), use);
-        item.floats = {s[0], s[1], s[2]};
+        addColour(spectrumSamplesToRGB(std::move(samples), use), values[0].loc);
       }
       break;
     default:  // Float, Point*, Vector*, Normal3

@@ -500,6 +500,30 @@ TEST(ParserErrors, BadBlackbody) {
             "scale) pairs, found 3 numbers");
 }
 
+// Found by fuzz_spd: a spectrum file "401 3.3e38" (values within float range) converted to an
+// infinite colour, and so did such spectra, XYZ values and blackbody scales written inline.
+TEST(ParserErrors, SpectraBeyondTheFloatRange) {
+  const std::string beyond = " gives a colour beyond the float range";
+  EXPECT_EQ(errorOf("Material \"matte\" \"spectrum Kd\" [401 3.3e38]"),
+            "t.pbrt:1:33: error: parameter \"spectrum Kd\"" + beyond);
+  EXPECT_EQ(errorOf("Material \"matte\" \"xyz Kd\" [1 1 1  3e38 3e38 3e38]"),
+            "t.pbrt:1:35: error: parameter \"xyz Kd\"" + beyond);
+  EXPECT_EQ(errorOf("LightSource \"point\" \"blackbody I\" [6500 3e38]"),
+            "t.pbrt:1:36: error: parameter \"blackbody I\"" + beyond);
+  SceneFileReader read = [](const std::string&) {
+    return std::string("401 0333333333333333333333333333333333333333");
+  };
+  Recorder r;
+  try {
+    parseString("Material \"matte\"\n  \"spectrum Kd\" \"s.spd\"", "/m/t.pbrt", r, {}, read);
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "/m/t.pbrt:2:17: error: parameter \"spectrum Kd\"" + beyond);
+  }
+  // Large but representable colours stay.
+  EXPECT_EQ(errorOf("Material \"matte\" \"spectrum Kd\" [400 1e30 700 1e30]"), "(no error)");
+}
+
 TEST(ParserErrors, MissingSpectrumFile) {
   std::string e = errorOf("Material \"metal\"\n \"spectrum eta\" \"nowhere/Au.eta.spd\"");
   EXPECT_EQ(e.rfind("t.pbrt:2:17: error: cannot read spectrum of parameter \"spectrum eta\": ", 0),

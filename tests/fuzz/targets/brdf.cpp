@@ -1,4 +1,3 @@
-#include <cmath>
 #include <optional>
 
 #include "core/error.h"
@@ -22,11 +21,8 @@ void brdf(std::string_view input) {
   } catch (const FileError&) {
     return;
   }
-  for (const auto& [wo, wi] : lookupDirections()) {
-    Spectrum f = table->lookup(wo, wi);
-    for (int c = 0; c < 3; ++c)
-      if (!(f[c] >= 0) || !std::isfinite(f[c])) broken("a .brdf lookup is negative or not finite");
-  }
+  checkLookups([&](const Vector3f& wo, const Vector3f& wi) { return table->lookup(wo, wi); },
+               "a .brdf lookup is negative or not finite");
 }
 
 }  // namespace candela::fuzz
