@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 #include "core/error.h"
@@ -102,6 +103,9 @@ MerlBrdfTable parseMerlBrdf(std::string_view bytes, const std::string& path) {
       double& v = rgb[c * n + i];
       if (!std::isfinite(v)) throw FileError(path, "MERL BRDF data holds a NaN or infinity");
       v *= scale[c];
+      // The table is kept in floats: a larger value would become infinite there.
+      if (v > std::numeric_limits<float>::max())
+        throw FileError(path, "MERL BRDF data holds a value beyond the float range");
     }
   return MerlBrdfTable(dims[0], dims[1], dims[2], rgb);
 }

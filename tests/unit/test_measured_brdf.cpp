@@ -154,6 +154,29 @@ TEST(MeasuredBRDF, MerlDimensionsWhoseProductWrapsAreRefused) {
   fs::remove(p);
 }
 
+// Found by fuzz_merl: a finite double beyond float's range (1e231 in the green table) became an
+// infinite table value.
+TEST(MeasuredBRDF, MerlValuesBeyondTheFloatRangeAreRefused) {
+  const int32_t dims[3] = {1, 1, 1};
+  const double rgb[3] = {0, 1e231, 72};
+  std::string bytes(reinterpret_cast<const char*>(dims), sizeof dims);
+  bytes.append(reinterpret_cast<const char*>(rgb), sizeof rgb);
+  try {
+    parseMerlBrdf(bytes, "big.merl");
+    ADD_FAILURE() << "no error";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("big.merl: error: MERL BRDF data holds a value beyond"),
+              std::string::npos)
+        << e.what();
+  }
+  const double large[3] = {1e40, -1e300, 72};  // within range once scaled; negative = no data
+  bytes.replace(sizeof dims, sizeof large, reinterpret_cast<const char*>(large), sizeof large);
+  MerlBrdfTable t = parseMerlBrdf(bytes, "large.merl");
+  Spectrum f = t.lookup(Vector3f(0, 0, 1), Vector3f(0, 0, 1));
+  EXPECT_FLOAT_EQ(f[0], float(1e40 * MerlBrdfTable::kRedScale));
+  EXPECT_EQ(f[1], 0);
+}
+
 // Spectral values to RGB the way the scene reader converts reflectances.
 Spectrum toRGB(std::span<const Float> lambda, std::span<const Float> values) {
   std::vector<SpectrumSample> s;
