@@ -10,7 +10,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   CLI::App app{
       "candela: a physically based renderer for pbrt scene files.\n"
       "Renders each WorldEnd of the scene to a scene-linear OpenEXR file with a PNG "
-      "preview."};
+      "preview.\n`candela merge -o out.exr pieces...` assembles the pieces of a render split "
+      "with --tile, --frames or --sample-range (candela merge --help)."};
   app.add_option("scene", o->sceneFiles, "Scene files, read in order ('-' or none: stdin)");
   // Bounded so that a typo cannot ask the system for a hundred thousand threads (which crashed).
   app.add_option("--nthreads", o->nThreads, "Worker threads (default: all cores; at most 4096)")

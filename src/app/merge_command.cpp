@@ -76,8 +76,8 @@ ImageBuffer addSampleRanges(const FramePieces& frame, ErrorLog* log,
 }
 
 // The output's EXR settings: the command line's, else what the pieces were written with.
-ExrOptions exrOptionsOf(const LoadedPiece& piece, const ImageMetadata& metadata,
-                        const MergeOptions& o) {
+ExrOptions exrOptionsOf(const LoadedPiece& piece, const MergeOptions& o) {
+  const ImageMetadata& metadata = piece.metadata;
   ExrOptions exr;
   exr.half = o.half || piece.info.half;
   const std::string* compression = metadata.findString("compression");
@@ -97,18 +97,20 @@ ExrOptions exrOptionsOf(const LoadedPiece& piece, const ImageMetadata& metadata,
 int merge(const MergeOptions& o) {
   checkImagePath(o.outfile);
   std::vector<LoadedPiece> pieces;
-  std::vector<ImageMetadata> metadata;
   for (const std::string& path : o.pieces) {
-    std::error_code ec;
-    if (fs::equivalent(fs::path(path), fs::path(o.outfile), ec))
-      throw FileError(o.outfile, "refusing to overwrite '" + path + "', a piece to merge");
     ImageMetadata meta;
     ImageBuffer image = readImage(path, &meta);
     RenderPiece info = readRenderPiece(path, image, meta);
-    pieces.push_back({path, std::move(image), std::move(info)});
-    metadata.push_back(std::move(meta));
+    pieces.push_back({path, std::move(image), std::move(meta), std::move(info)});
   }
   const std::vector<FramePieces> frames = groupPieces(pieces, o.expected);
+  for (const FramePieces& frame : frames)
+    for (const LoadedPiece& piece : pieces) {
+      std::error_code ec;
+      const std::string target = framePath(o.outfile, frame.frame);
+      if (fs::equivalent(fs::path(piece.path), fs::path(target), ec))
+        throw FileError(target, "refusing to overwrite '" + piece.path + "', a piece to merge");
+    }
   const bool bySample = bool(pieces.front().info.samples);
   if (!o.errorLog.empty() && !bySample)
     throw MergeRefusal("error: --error-log needs pieces split by --sample-range");
@@ -142,9 +144,8 @@ int merge(const MergeOptions& o) {
     whole.samples.reset();
     addPieceMetadata(whole, &meta);
     meta.ints.push_back({"candela:pieces", int(frame.pieces.size())});
-    const size_t firstIndex = size_t(&first - pieces.data());
     const std::string target = framePath(o.outfile, frame.frame);
-    writeExr(staged.stage(target), image, meta, exrOptionsOf(first, metadata[firstIndex], o));
+    writeExr(staged.stage(target), image, meta, exrOptionsOf(first, o));
     if (!o.quiet)
       std::fprintf(stderr, "Merged frame %d from %zu pieces: %.2f s of rendering, %llu rays\n",
                    frame.frame, frame.pieces.size(), seconds, rays);

@@ -17,6 +17,7 @@ namespace candela {
 struct LoadedPiece {
   std::string path;
   ImageBuffer image;
+  ImageMetadata metadata;  // the file's header
   RenderPiece info;
 };
 
