@@ -11,7 +11,8 @@ sed 's/"integer xresolution" \[256\] "integer yresolution" \[256\]/"integer xres
   "$box" > a.pbrt
 sed 's/"rgb L" \[17 12 4\]/"rgb L" [4 12 17]/' a.pbrt > b.pbrt
 cmp -s a.pbrt b.pbrt && { echo "FAIL: could not make the scenes"; exit 1; }
-render() { "$candela" "$@" --preview none -q; }
+source "$(dirname "${BASH_SOURCE[0]}")/parallel.bash"
+render() { in_parallel "$candela" "$@" --preview none -q; }
 render a.pbrt --spp 4 --tile 0/2 -o t0.exr
 render a.pbrt --spp 4 --tile 1/2 -o t1.exr
 render b.pbrt --spp 4 --tile 1/2 -o other-scene.exr
@@ -21,7 +22,8 @@ render a.pbrt --spp 4 --quick --tile 1/2 -o other-resolution.exr
 render a.pbrt --spp 4 --tile 1/3 -o other-grid.exr
 render a.pbrt --spp 8 --sample-range 0-3 -o s0-3.exr
 render a.pbrt --spp 8 --sample-range 2-7 -o s2-7.exr
-"$candela" a.pbrt --spp 4 -q -o whole.exr --preview whole.png
+in_parallel "$candela" a.pbrt --spp 4 -q -o whole.exr --preview whole.png
+wait_all
 cp t1.exr copy-of-t1.exr
 head -c $(($(stat -c %s t1.exr) / 2)) t1.exr > truncated.exr
 

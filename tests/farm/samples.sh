@@ -13,7 +13,9 @@ sed -e 's/"integer xresolution" \[256\] "integer yresolution" \[256\]/"integer x
   "$src/scenes/cornell-box/cornell-box.pbrt" > odd.pbrt
 grep -q mitchell odd.pbrt || { echo "FAIL: could not make the scene"; exit 1; }
 opts=(--spp 16 --seed 3 --aov variance,samples --preview none -q)
-"$candela" odd.pbrt "${opts[@]}" -o single.exr
+source "$(dirname "${BASH_SOURCE[0]}")/parallel.bash"
+in_parallel "$candela" odd.pbrt "${opts[@]}" -o single.exr
+in_parallel "$candela" odd.pbrt --spp 64 --seed 99 --preview none -q -o ref.exr
 
 check_split() { # NAME RANGE... (each "A-B" or "A-B/tile I/N")
   local name=$1 pieces=() i=0
@@ -21,10 +23,12 @@ check_split() { # NAME RANGE... (each "A-B" or "A-B/tile I/N")
   for spec in "$@"; do
     local range=${spec%%/*} tile=()
     [ "$spec" = "$range" ] || tile=(--tile "${spec#*/}")
-    "$candela" odd.pbrt "${opts[@]}" --sample-range "$range" "${tile[@]}" -o "$name-$i.exr"
+    in_parallel "$candela" odd.pbrt "${opts[@]}" --sample-range "$range" "${tile[@]}" \
+      -o "$name-$i.exr"
     pieces+=("$name-$i.exr")
     i=$((i + 1))
   done
+  wait_all
   "$candela" merge -q -o "$name.exr" "${pieces[@]}"
   echo -n "$name: "
   "$diff" single.exr "$name.exr" --max-ulps 1 ||
@@ -36,7 +40,6 @@ check_split tiles 0-7/0/2 8-15/0/2 0-7/1/2 8-15/1/2
 [ "$("$diff" --get halves-1.exr candela:sampleRange)" = 5-15 ] || { echo "FAIL: range"; exit 1; }
 
 # The error log: a row after each range, against a reference or the pixels' own variance.
-"$candela" odd.pbrt --spp 64 --seed 99 --preview none -q -o ref.exr
 "$candela" merge -q -o logged.exr --error-log log.csv --reference ref.exr uneven-0.exr uneven-1.exr \
   uneven-2.exr
 "$candela" merge -q -o estimated.exr --error-log estimated.csv halves-0.exr halves-1.exr

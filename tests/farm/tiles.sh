@@ -14,26 +14,16 @@ sed -e 's/"integer xresolution" \[256\] "integer yresolution" \[256\]/"integer x
 grep -q 'xresolution" \[61\]' odd.pbrt && grep -q mitchell odd.pbrt && grep -q 'xwidth" \[3\]' strip.pbrt ||
   { echo "FAIL: could not make the test scenes"; exit 1; }
 opts=(--spp 4 --seed 7 --preview none -q)
-# Most of each run is starting the process: the tiles render four at a time.
-pids=()
-in_parallel() {
-  "$@" &
-  pids+=($!)
-  if [ ${#pids[@]} -ge 4 ]; then wait_all; fi
-}
-wait_all() {
-  local pid status=0
-  for pid in "${pids[@]}"; do wait "$pid" || status=1; done
-  pids=()
-  [ $status -eq 0 ] || { echo "FAIL: a render failed"; exit 1; }
-}
-aovs=(--aov albedo,normal,depth,position,variance,samples)
+source "$(dirname "${BASH_SOURCE[0]}")/parallel.bash"
 
 check_tiles() { # SCENE N [candela options...]
   local scene=$1 n=$2 name
   shift 2
   name=$(basename "$scene" .pbrt)-$n
-  in_parallel "$candela" "$scene" "${opts[@]}" "$@" -o "$name-single.exr"
+  # One single render per scene and options, for every N.
+  local single
+  single=$(basename "$scene" .pbrt)-single$(echo "$@" | tr -c 'a-zA-Z0-9.\n' _).exr
+  [ -e "$single" ] || in_parallel "$candela" "$scene" "${opts[@]}" "$@" -o "$single"
   local pieces=()
   for ((i = 0; i < n; ++i)); do
     in_parallel "$candela" "$scene" "${opts[@]}" "$@" --tile "$i/$n" -o "$name-tile$i.exr"
@@ -42,7 +32,7 @@ check_tiles() { # SCENE N [candela options...]
   wait_all
   "$candela" merge -q -o "$name-merged.exr" "${pieces[@]}"
   echo -n "$name: "
-  "$diff" "$name-single.exr" "$name-merged.exr" --max-ulps 0 ||
+  "$diff" "$single" "$name-merged.exr" --max-ulps 0 ||
     { echo "FAIL: $n tiles of $scene are not the single render's pixels"; exit 1; }
   [ "$n" = 3 ] || return 0
   # What each piece is, and the merge's sums of their seconds and rays.
@@ -63,7 +53,7 @@ check_tiles() { # SCENE N [candela options...]
     'BEGIN { exit !(a > 0 && (a - b) ^ 2 < (1e-5 * a) ^ 2) }' ||
     { echo "FAIL: $name: merged seconds are not the pieces' sum $seconds"; exit 1; }
   [ "$("$diff" --get "$name-merged.exr" candela:sceneHash)" = \
-    "$("$diff" --get "$name-single.exr" candela:sceneHash)" ] || { echo "FAIL: scene hash"; exit 1; }
+    "$("$diff" --get "$single" candela:sceneHash)" ] || { echo "FAIL: scene hash"; exit 1; }
 }
 
 for n in 1 2 3 7 16; do check_tiles odd.pbrt $n "${aovs[@]}"; done
