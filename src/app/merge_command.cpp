@@ -10,11 +10,11 @@
 #include "app/error_log.h"
 #include "app/piece_set.h"
 #include "app/staged_files.h"
-#include "app/tile_paste.h"
 #include "core/error.h"
 #include "film/error_metrics.h"
 #include "film/film_sums.h"
 #include "film/output/image_output.h"
+#include "film/output/image_plugin.h"
 #include "filters/box_filter.h"
 #include "renderers/tile_grid.h"
 
@@ -75,6 +75,23 @@ ImageBuffer addSampleRanges(const FramePieces& frame, ErrorLog* log,
   return film.image();
 }
 
+// The tiles of a frame put together by the image plug-in (OpenImageIO's paste).
+ImageBuffer pasteTiles(const FramePieces& frame) {
+  const RenderPiece& ref = frame.pieces.front()->info;
+  ImageBuffer canvas(ref.region.pMax.x - ref.region.pMin.x, ref.region.pMax.y - ref.region.pMin.y,
+                     frame.pieces.front()->image.channels);
+  canvas.xOffset = ref.region.pMin.x;
+  canvas.yOffset = ref.region.pMin.y;
+  canvas.fullWidth = ref.fullResolution.x;
+  canvas.fullHeight = ref.fullResolution.y;
+  std::vector<const ImageBuffer*> tiles;
+  for (const LoadedPiece* p : frame.pieces) tiles.push_back(&p->image);
+  std::string error;
+  if (!imagePlugin().pasteTiles(tiles, &canvas, &error))
+    throw std::runtime_error("candela merge: error: cannot assemble the tiles: " + error);
+  return canvas;
+}
+
 // The output's EXR settings: the command line's, else what the pieces were written with.
 ExrOptions exrOptionsOf(const LoadedPiece& piece, const MergeOptions& o) {
   const ImageMetadata& metadata = piece.metadata;
@@ -126,14 +143,8 @@ int merge(const MergeOptions& o) {
   for (const FramePieces& frame : frames) {
     const LoadedPiece& first = *frame.pieces.front();
     const RenderPiece& ref = first.info;
-    ImageBuffer image;
-    if (bySample) {
-      image = addSampleRanges(frame, log.get(), reference, o);
-    } else {
-      std::vector<const ImageBuffer*> tiles;
-      for (const LoadedPiece* p : frame.pieces) tiles.push_back(&p->image);
-      image = pasteTiles(tiles, ref.region, ref.fullResolution.x, ref.fullResolution.y);
-    }
+    const ImageBuffer image =
+        bySample ? addSampleRanges(frame, log.get(), reference, o) : pasteTiles(frame);
     double seconds = 0;
     unsigned long long rays = 0;
     for (const LoadedPiece* p : frame.pieces) seconds += p->info.seconds, rays += p->info.rays;
