@@ -2,15 +2,16 @@
 # Checks that the install lists name every Debian package the build, the tests and the tools use,
 # so that a fresh Debian 12 machine gets them from tools/setup.sh and not from earlier hand work.
 #   tools/check-install-list.sh [--manifest FILE] [--build-dir DIR] [--python-modules "m1 m2"]
-#                               [LIST...]
+#                               [--programs "p1 p2"] [LIST...]
 # LISTs default to third_party_config/apt-packages.txt and apt-packages-extras.txt.
 #
 # 1. A probe CMake project (tools/install-check) finds the packages as the build does, with tests
 #    and benchmarks on, and writes every file their configs refer to (imported locations, include
 #    and link directories, link libraries, the config files, the compiler and build tools). With
 #    --manifest FILE an existing manifest is reused, or the probe writes it there.
-# 2. The interpreter and Python modules the tools import (--python-modules) join the manifest, and
-#    with --build-dir DIR (a Ninja build) every system header its objects were compiled with.
+# 2. The interpreter and Python modules the tools import (--python-modules), the programs the tests
+#    run (--programs: Slurm and munge, for tests/farm/slurm.sh), and with --build-dir DIR (a Ninja
+#    build) every system header its objects were compiled with join the manifest.
 # 3. Each file is mapped to the installed package that owns it (dpkg's file lists, through
 #    /usr-merge and symlinks).
 # 4. That package must lie in what a fresh machine would have: the base system (Essential and
@@ -24,13 +25,15 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 manifest=""
 builddir=""
 modules="matplotlib matplotlib.pyplot matplotlib.image PIL xml.etree.ElementTree"
+programs="munged mungekey slurmctld slurmd sbatch squeue scancel scontrol sinfo"
 lists=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --manifest) manifest=$2; shift 2 ;;
     --python-modules) modules=$2; shift 2 ;;
+    --programs) programs=$2; shift 2 ;;
     --build-dir) builddir=$2; shift 2 ;;
-    -h|--help) sed -n '2,20p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,21p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "check-install-list: unknown option $1" >&2; exit 2 ;;
     *) lists+=("$1"); shift ;;
   esac
@@ -76,6 +79,15 @@ if [ -n "$modules" ]; then
     printf 'python module %s\t%s\n' "$m" "$f" >>"$work/files.tsv"
   done
 fi
+
+# The programs the tests run, found as they find them (daemons in /usr/sbin).
+for p in $programs; do
+  f=$(PATH=$PATH:/usr/sbin:/sbin command -v "$p" 2>/dev/null) || {
+    echo "check-install-list: $p is not installed; tests/farm/slurm.sh runs it" >&2
+    exit 1
+  }
+  printf 'program %s\t%s\n' "$p" "$f" >>"$work/files.tsv"
+done
 
 # The headers the build really included (Ninja's dependency log), outside the source and build.
 if [ -n "$builddir" ]; then

@@ -10,7 +10,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   CLI::App app{
       "candela: a physically based renderer for pbrt scene files.\n"
       "Renders each WorldEnd of the scene to a scene-linear OpenEXR file with a PNG "
-      "preview."};
+      "preview.\n`candela merge -o out.exr pieces...` assembles the pieces of a render split "
+      "with --tile, --frames or --sample-range (candela merge --help)."};
   app.add_option("scene", o->sceneFiles, "Scene files, read in order ('-' or none: stdin)");
   // Bounded so that a typo cannot ask the system for a hundred thousand threads (which crashed).
   app.add_option("--nthreads", o->nThreads, "Worker threads (default: all cores; at most 4096)")
@@ -76,6 +77,15 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
                  "Stop once relMSE is below this (estimated from the image's own variance "
                  "without --reference)")
       ->check(CLI::PositiveNumber);
+  std::string tile, frames, sampleRange;
+  app.add_option("--tile", tile,
+                 "Render tile I of a grid of N (I/N, I from 0 to N-1) that candela chooses over "
+                 "the image; `candela merge` assembles the tiles");
+  app.add_option("--frames", frames,
+                 "Render only frames A to B (A-B or A, from 0) of a scene with several WorldEnds");
+  app.add_option("--sample-range", sampleRange,
+                 "Take only samples A to B (A-B, from 0) of each pixel; the EXR keeps the "
+                 "pixels' sums for `candela merge`");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -94,6 +104,22 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
     }
     o->cropWindow = Bounds2f(Point2f(crop[0], crop[2]), Point2f(crop[1], crop[3]));
   }
+  auto usage = [](const std::string& message) {
+    std::fprintf(stderr, "candela: error: %s\n", message.c_str());
+    return 2;
+  };
+  if (!tile.empty() && !(o->tile = parseTileIndex(tile)))
+    return usage("--tile " + tile + ": expected I/N with N >= 1 and 0 <= I < N");
+  if (!frames.empty() && !(o->frames = parseIndexRange(frames)))
+    return usage("--frames " + frames + ": expected A-B (or A) with 0 <= A <= B");
+  if (!sampleRange.empty() && !(o->sampleRange = parseIndexRange(sampleRange)))
+    return usage("--sample-range " + sampleRange + ": expected A-B (or A) with 0 <= A <= B");
+  // A stop condition per piece would give the pieces different sample counts.
+  if ((o->tile || o->sampleRange) && o->progressive())
+    return usage(std::string(o->tile ? "--tile" : "--sample-range") +
+                 " renders a piece of a fixed sample count: it cannot be combined with "
+                 "--reference, --error-log, --time-budget or --target-error (`candela merge "
+                 "--error-log` logs the error of merged sample ranges)");
   return std::nullopt;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/render_piece.h"
 #include "core/bounds.h"
 
 namespace candela {
@@ -36,6 +37,10 @@ struct CliOptions {
   std::string errorLog;    // CSV: seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95
   double timeBudget = 0;   // seconds; 0 = none
   double targetError = 0;  // relMSE; 0 = none
+  // A piece of a render split for a farm (`candela merge` assembles them): one tile of a grid,
+  // some of the scene's frames, some of each pixel's samples.
+  std::optional<TileIndex> tile;
+  std::optional<IndexRange> frames, sampleRange;
   bool progressive() const {
     return !reference.empty() || !errorLog.empty() || timeBudget > 0 || targetError > 0;
   }

@@ -1,12 +1,11 @@
 #include "app/frame_writer.h"
 
-#include <unistd.h>
-
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 
+#include "app/render_piece.h"
 #include "core/error.h"
+#include "film/film_sums.h"
 #include "film/output/image_output.h"
 #include "film/output/image_plugin.h"
 #include "film/tonemap/tone_map.h"
@@ -35,30 +34,13 @@ std::optional<std::array<Float, 9>> FrameWriter::workingSpaceMatrix() const {
   return m;
 }
 
-FrameWriter::~FrameWriter() {
-  for (const Staged& s : staged_) {
-    std::error_code ec;
-    fs::remove(s.file, ec);
-  }
-}
+FrameWriter::~FrameWriter() = default;
 
 namespace {
 std::string joinedSceneNames(const CliOptions& cli) {
   std::string s;
   for (const auto& f : cli.sceneFiles) s += (s.empty() ? "" : " ") + f;
   return s;
-}
-
-// frame 0 keeps the name; later frames of a multi-frame file get "-1", "-2", ... before the
-// extension so they do not overwrite each other.
-fs::path framePath(fs::path p, int frameIndex) {
-  if (frameIndex == 0) return p;
-  fs::path ext = p.extension();
-  p.replace_extension();
-  p += "-";
-  p += std::to_string(frameIndex);
-  p += ext;
-  return p;
 }
 }  // namespace
 
@@ -73,13 +55,13 @@ std::string FrameWriter::exrPathOf(const std::string& filmFilename, int frameInd
                    "%s: warning: output is scene-linear OpenEXR; writing %s instead of %s\n",
                    warnAt->str().c_str(), exrPath.string().c_str(), original.string().c_str());
   }
-  return framePath(exrPath, frameIndex).string();
+  return framePath(exrPath.string(), frameIndex);
 }
 
 std::string FrameWriter::previewPathOf(const std::string& exrPath, int frameIndex) const {
   if (cli_.preview == "none") return "";
   return (cli_.preview.empty() ? fs::path(exrPath).replace_extension(".png")
-                               : framePath(cli_.preview, frameIndex))
+                               : fs::path(framePath(cli_.preview, frameIndex)))
       .string();
 }
 
@@ -101,27 +83,9 @@ void FrameWriter::checkOutputs(const std::string& filmFilename, int frameIndex,
   }
 }
 
-std::string FrameWriter::stage(const std::string& target) {
-  const fs::path t(target);
-  // Built with += rather than "." + string: GCC 12 warns falsely (-Wrestrict) about the latter.
-  std::string name = ".";
-  name += t.stem().string();
-  name += ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(staged_.size());
-  name += t.extension().string();
-  std::string file = (t.parent_path() / name).string();
-  staged_.push_back({file, target});
-  return file;
-}
+std::string FrameWriter::stage(const std::string& target) { return staged_.stage(target); }
 
-void FrameWriter::commit() {
-  for (const Staged& s : staged_) {
-    std::error_code ec;
-    fs::rename(s.file, s.target, ec);
-    if (ec) throw FileError(s.target, "cannot rename '" + s.file + "' to it: " + ec.message());
-    if (!cli_.quiet) std::fprintf(stderr, "Wrote %s\n", s.target.c_str());
-  }
-  staged_.clear();
-}
+void FrameWriter::commit() { staged_.commit(cli_.quiet); }
 
 void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
                         const RenderResult& result, int frameIndex, const ImageMetadata& extra,
@@ -129,18 +93,10 @@ void FrameWriter::write(const Film& film, const SceneDescription& desc, int spp,
   const std::string exrPath = exrPathOf(film.filename(), frameIndex, &desc.film.loc);
 
   ImageBuffer image = film.image();
+  if (cli_.sampleRange) appendFilmSums(film, image);
   ImageMetadata meta;
-  meta.strings.push_back({"Software", std::string("candela ") + CANDELA_VERSION});
-  meta.strings.push_back({"candela:scene", joinedSceneNames(cli_)});
-  meta.ints.push_back({"candela:spp", spp});
-  meta.strings.push_back({"candela:seed", std::to_string(cli_.seed)});  // 64-bit: no EXR int type
-  meta.floats.push_back({"candela:renderSeconds", float(result.seconds)});
-  meta.strings.push_back(
-      {"candela:rays", std::to_string(result.rays.intersectionRays + result.rays.shadowRays)});
-  std::time_t now = std::time(nullptr);
-  char date[32];
-  std::strftime(date, sizeof date, "%Y:%m:%d %H:%M:%S", std::localtime(&now));
-  meta.strings.push_back({"DateTime", date});
+  addRenderMetadata(joinedSceneNames(cli_), spp, std::to_string(cli_.seed), result.seconds,
+                    result.rays.intersectionRays + result.rays.shadowRays, &meta);
   meta.strings.insert(meta.strings.end(), extra.strings.begin(), extra.strings.end());
   meta.floats.insert(meta.floats.end(), extra.floats.begin(), extra.floats.end());
   meta.ints.insert(meta.ints.end(), extra.ints.begin(), extra.ints.end());

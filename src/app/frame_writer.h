@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/cli_options.h"
+#include "app/staged_files.h"
 #include "film/film.h"
 #include "film/output/image_output.h"
 #include "integrators/integrator.h"
@@ -52,10 +53,7 @@ class FrameWriter {
   const CliOptions& cli_;
   std::unique_ptr<ColorManagement> colorManagement_;
   std::string sceneLinear_, workingSpace_;  // canonical names
-  struct Staged {
-    std::string file, target;
-  };
-  std::vector<Staged> staged_;
+  StagedFiles staged_;
   // A hidden name beside target, with its extension (which picks the image format).
   std::string stage(const std::string& target);
   // warnAt: where to say that a non-EXR name was changed (null: say nothing).

@@ -2,6 +2,8 @@
 // Exit codes: 0 success, 1 scene or render error, 2 usage error.
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
+#include <iterator>
 #include <new>
 #include <string>
 
@@ -9,6 +11,10 @@
 #include "app/cli_options.h"
 #include "app/error_log.h"
 #include "app/frame_writer.h"
+#include "app/merge_command.h"
+#include "app/render_piece.h"
+#include "app/sample_range.h"
+#include "app/scene_hash.h"
 #include "core/interrupt.h"
 #include "film/error_metrics.h"
 #include "film/output/image_output.h"
@@ -69,11 +75,13 @@ ProgressiveResult renderProgressively(RenderJob& job, const CliOptions& cli,
 using InputFiles = std::vector<std::string>;
 
 void renderFrame(const SceneDescription& desc, const CliOptions& cli, const EmbreeDevice& device,
-                 FrameWriter& writer, int frameIndex, InputFiles& inputs) {
+                 FrameWriter& writer, int frameIndex, InputFiles& inputs,
+                 const std::string& sceneHash) {
   BuildOptions build;
   build.seed = cli.seed;
   build.sppOverride = cli.spp;
   build.cropWindow = cli.cropWindow;
+  if (cli.tile) build.tileIndex = cli.tile->index, build.tileCount = cli.tile->count;
   build.quick = cli.quick;
   build.accelerator = cli.accelerator;
   build.subdiv = cli.subdiv == "opensubdiv" ? LoopProducer::OpenSubdiv : LoopProducer::Book;
@@ -107,6 +115,14 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
         std::string(job.imageRenderer ? "renderer" : "integrator") +
         " does not keep (its light is splatted or gathered from photons): give --reference, or "
         "--time-budget");
+  if (cli.sampleRange) checkSampleRange(job, *cli.sampleRange);
+  if (cli.tile && cli.tile->count > 1 && !cli.quiet &&
+      (job.imageRenderer || job.integrator->splats()))
+    std::fprintf(stderr,
+                 "candela: warning: --tile: this scene's %s spreads each sample's light across "
+                 "the image, so each tile does much of the whole image's work (its pixels are "
+                 "still the whole render's)\n",
+                 job.imageRenderer ? "renderer" : "integrator");
   if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
   writer.checkOutputs(job.film->filename(), frameIndex, inputs);
 
@@ -114,6 +130,10 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   options.nThreads = cli.nThreads;
   options.tileSize = cli.tileSize;
   options.quiet = cli.quiet;
+  if (cli.sampleRange) {
+    options.firstSample = cli.sampleRange->first;
+    options.endSample = cli.sampleRange->last + 1;
+  }
   ImageMetadata extra;
   ProgressiveResult pr;
   if (cli.progressive()) {
@@ -162,6 +182,18 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   ExrOptions exr;
   exr.compression = cli.compression.empty() ? job.exrCompression : cli.compression;
   exr.half = cli.half || job.exrHalf;
+  RenderPiece piece;
+  piece.sceneHash = sceneHash;
+  piece.imageOptions = imageOptionsText(cli, exr.half);
+  piece.frame = frameIndex;
+  if (cli.tile) piece.tile = *cli.tile;
+  piece.region = job.imageRegion;
+  piece.samples = cli.sampleRange;
+  piece.filmScale = job.film->scale();
+  piece.half = exr.half;
+  addPieceMetadata(piece, &extra);
+  // The sums need every bit of their floats; `candela merge` writes the half image.
+  if (cli.sampleRange) exr.half = false;
   writer.write(*job.film, desc, spp, result, frameIndex, extra, exr);
   if (job.integrator) {
     std::vector<NamedImage> images = job.integrator->extraImages(*job.film);
@@ -172,6 +204,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "merge") return runMerge(argc - 1, argv + 1);
   CliOptions cli;
   if (auto code = parseCommandLine(argc, argv, &cli)) return *code;
   if (cli.sceneFiles.empty()) cli.sceneFiles.push_back("-");
@@ -186,11 +219,29 @@ int main(int argc, char** argv) {
     SceneBuilder builder(
         [&](SceneDescription&& desc) { frames.push_back(std::move(desc)); },
         cli.quiet ? SceneBuilder::WarningCallback() : SceneBuilder::WarningCallback(printWarning));
-    for (const std::string& file : cli.sceneFiles) parseFile(file, builder);
+    SceneHash hash;
+    for (const std::string& file : cli.sceneFiles) {
+      if (file == "-") {
+        // Read here rather than by parseFile, so that its text can be hashed too.
+        std::string text((std::istreambuf_iterator<char>(std::cin)),
+                         std::istreambuf_iterator<char>());
+        hash.add(text);
+        parseString(text, file, builder);
+      } else {
+        parseFile(file, builder);
+        hash.addFile(file);
+      }
+    }
     builder.endOfInput(FileLoc{cli.sceneFiles.back(), 0, 0});
     if (frames.empty()) {
       std::fprintf(stderr,
                    "candela: error: the scene has no WorldBegin/WorldEnd: nothing to render\n");
+      return 1;
+    }
+    if (cli.frames && cli.frames->last >= int(frames.size())) {
+      std::fprintf(stderr, "candela: error: --frames %s: the scene has %zu frame%s (0-%zu)\n",
+                   cli.frames->str().c_str(), frames.size(), frames.size() == 1 ? "" : "s",
+                   frames.size() - 1);
       return 1;
     }
     InputFiles inputs;
@@ -198,8 +249,9 @@ int main(int argc, char** argv) {
       if (file != "-") inputs.push_back(file);
     if (!cli.reference.empty()) inputs.push_back(cli.reference);
     for (size_t i = 0; i < frames.size(); ++i) {
+      if (cli.frames && !cli.frames->contains(int(i))) continue;
       throwIfInterrupted();
-      renderFrame(frames[i], cli, device, writer, int(i), inputs);
+      renderFrame(frames[i], cli, device, writer, int(i), inputs, hash.hex());
     }
     throwIfInterrupted();
     writer.commit();

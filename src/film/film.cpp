@@ -68,6 +68,24 @@ void Film::accumulate(const Point2i& pixel, const Spectrum& L, Float alpha, Floa
   ++px.count;
 }
 
+Film::PixelSums Film::pixelSums(const Point2i& pixel) const {
+  return pixelBounds_.inside(pixel) ? at(pixel) : PixelSums{};
+}
+
+void Film::addPixelSums(const Point2i& pixel, const PixelSums& s) {
+  if (!pixelBounds_.inside(pixel)) return;
+  Pixel& px = at(pixel);
+  for (int c = 0; c < 3; ++c) {
+    px.rgbSum[c] += s.rgbSum[c];
+    px.w2L2Sum[c] += s.w2L2Sum[c];
+    px.w2LSum[c] += s.w2LSum[c];
+  }
+  px.alphaSum += s.alphaSum;
+  px.weightSum += s.weightSum;
+  px.w2Sum += s.w2Sum;
+  px.count += s.count;
+}
+
 // The AOV channels of one pixel, in aovChannelNames order.
 void Film::writeAovs(const Point2i& p, float* out) const {
   const AovPixel* a = aovPixels_.empty() ? nullptr : &aovPixels_[offset(p)];

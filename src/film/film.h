@@ -84,8 +84,9 @@ class Film {
   // R, G, B, A and the enabled AOV channels of the pixel bounds, top row first.
   ImageBuffer image() const;
 
- private:
-  struct Pixel {
+  // What a pixel's samples added up to, from which its value, alpha and variance follow. A render
+  // split by sample range (`--sample-range`) is put together by adding its pieces' sums.
+  struct PixelSums {
     double rgbSum[3] = {0, 0, 0};
     double alphaSum = 0;
     double weightSum = 0;
@@ -95,6 +96,13 @@ class Film {
     double w2Sum = 0;
     long count = 0;
   };
+  // Zero sums outside the pixel bounds.
+  PixelSums pixelSums(const Point2i& pixel) const;
+  // Adds sums to a pixel's, as if its samples had been added here. Ignored outside the bounds.
+  void addPixelSums(const Point2i& pixel, const PixelSums& sums);
+
+ private:
+  using Pixel = PixelSums;
   void accumulate(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight);
   void writeAovs(const Point2i& p, float* out) const;
   size_t offset(const Point2i& p) const;  // p must be inside pixelBounds_
@@ -121,6 +129,15 @@ class Film {
   uint64_t lightPaths_ = 0;
   Float scale_ = 1, maxSampleLuminance_ = kInfinity, diagonalMm_ = 35;
 };
+
+// The full resolution and crop window (NDC) that a Film statement's parameters give, as
+// createFilm reads them; cropOverride replaces the scene's window. SceneErrors as createFilm.
+struct FilmFrame {
+  Point2i resolution;
+  Bounds2f cropWindow;
+};
+FilmFrame filmFrame(const ParamSet& params, const FileLoc& loc,
+                    std::optional<Bounds2f> cropOverride);
 
 // The film named by a Film statement ("image"), with pbrt-v2's parameters: xresolution 640,
 // yresolution 480, cropwindow [0 1 0 1], filename "candela.exr" (a filename given in the scene

@@ -42,11 +42,8 @@ Bounds2f cropParam(const ParamSet& params, const FileLoc& loc) {
 
 }  // namespace
 
-std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params,
-                                 std::unique_ptr<Filter> filter, const FileLoc& loc,
-                                 std::optional<Bounds2f> cropOverride) {
-  if (name != "image") throw SceneError(loc, "unknown film \"" + name + "\" (known: image)");
-  if (!filter) throw SceneError(loc, "film: no pixel filter");
+FilmFrame filmFrame(const ParamSet& params, const FileLoc& loc,
+                    std::optional<Bounds2f> cropOverride) {
   Point2i res(resolutionParam(params, "xresolution", 640, loc),
               resolutionParam(params, "yresolution", 480, loc));
   Bounds2f crop = cropParam(params, loc);
@@ -57,6 +54,20 @@ std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params
   }
   if (std::isnan(crop.pMin.x + crop.pMin.y + crop.pMax.x + crop.pMax.y))
     throw SceneError(cropLoc, "crop window has a NaN value");
+  if (Film::pixelBoundsOf(res, crop).empty())
+    throw SceneError(cropLoc, "crop window [" + std::to_string(crop.pMin.x) + " " +
+                                  std::to_string(crop.pMax.x) + " " + std::to_string(crop.pMin.y) +
+                                  " " + std::to_string(crop.pMax.y) + "] covers no pixel of the " +
+                                  std::to_string(res.x) + "x" + std::to_string(res.y) + " image");
+  return {res, crop};
+}
+
+std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params,
+                                 std::unique_ptr<Filter> filter, const FileLoc& loc,
+                                 std::optional<Bounds2f> cropOverride) {
+  if (name != "image") throw SceneError(loc, "unknown film \"" + name + "\" (known: image)");
+  if (!filter) throw SceneError(loc, "film: no pixel filter");
+  const auto [res, crop] = filmFrame(params, loc, cropOverride);
   std::string filename = params.getOneString("filename", "candela.exr");
   if (filename.empty()) throw SceneError(params.locationOf("filename", loc), "empty filename");
   // The film keeps about 112 bytes per pixel (sums in double for the mean and the variance): past
@@ -79,11 +90,6 @@ std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params
   film->setScale(positiveParam(params, "scale", 1, false, loc));
   film->setMaxSampleLuminance(positiveParam(params, "maxsampleluminance", kInfinity, true, loc));
   film->setDiagonal(positiveParam(params, "diagonal", 35, false, loc));
-  if (film->pixelBounds().empty())
-    throw SceneError(cropLoc, "crop window [" + std::to_string(crop.pMin.x) + " " +
-                                  std::to_string(crop.pMax.x) + " " + std::to_string(crop.pMin.y) +
-                                  " " + std::to_string(crop.pMax.y) + "] covers no pixel of the " +
-                                  std::to_string(res.x) + "x" + std::to_string(res.y) + " image");
   return film;
 }
 

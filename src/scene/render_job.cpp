@@ -8,6 +8,7 @@
 
 #include "accel/aggregate_factory.h"
 #include "accel/embree/embree_aggregate.h"
+#include "renderers/tile_grid.h"
 #include "scene/material_factory.h"
 #include "scene/named_media.h"
 #include "scene/plugin_factories.h"
@@ -293,9 +294,25 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
                          yres, filmDesc.loc);
   }
   PluginDesc filterDesc = orDefault(desc.filter, "box");
+  const FilmFrame frame = filmFrame(filmParams, filmDesc.loc, options.cropWindow);
+  job.imageRegion = Film::pixelBoundsOf(frame.resolution, frame.cropWindow);
+  std::optional<Bounds2f> crop = options.cropWindow;
+  if (options.tileCount > 0) {
+    try {
+      TileGrid grid(job.imageRegion, options.tileCount);
+      crop = cropWindowForPixels(grid.tile(options.tileIndex), frame.resolution);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(filmDesc.loc, std::string("--tile ")
+                                         .append(std::to_string(options.tileIndex))
+                                         .append("/")
+                                         .append(std::to_string(options.tileCount))
+                                         .append(": ")
+                                         .append(e.what()));
+    }
+  }
   job.film = createFilm(filmDesc.name, filmParams,
                         createFilter(filterDesc.name, filterDesc.params, filterDesc.loc),
-                        filmDesc.loc, options.cropWindow);
+                        filmDesc.loc, crop);
   job.film->enableAovs(parseAovList(filmParams.getOneString("aovs", ""),
                                     filmParams.locationOf("aovs", filmDesc.loc)) |
                        options.aovs);

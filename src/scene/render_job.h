@@ -42,8 +42,11 @@ struct BuildOptions {
   uint64_t seed = 0;
   int sppOverride = 0;                 // 0: the sampler's own count
   std::optional<Bounds2f> cropWindow;  // NDC, overrides the film's
-  bool quick = false;                  // quarter resolution, an eighth of the samples
-  std::string accelerator;             // overrides the Accelerator statement ("" = the scene's)
+  // --tile: render only tile tileIndex of a grid of tileCount tiles (renderers/tile_grid.h) over
+  // the pixels the film would render (its crop window's); tileCount 0 renders them all.
+  int tileIndex = 0, tileCount = 0;
+  bool quick = false;       // quarter resolution, an eighth of the samples
+  std::string accelerator;  // overrides the Accelerator statement ("" = the scene's)
   LoopProducer subdiv = LoopProducer::Book;  // the code that refines "loopsubdiv" shapes
   HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact;  // --hyperboloid-normal
   unsigned aovs = 0;  // AovFlag bits, added to the Film's "aovs"
@@ -96,6 +99,9 @@ struct RenderJob {
   std::unique_ptr<Medium> volume;
   std::unique_ptr<VolumeIntegrator> volumeIntegrator;
   std::unique_ptr<Film> film;
+  // The pixels the whole image has (the film's crop window's): with BuildOptions::tileCount, what
+  // the tiles cover together; else the film's own pixel bounds.
+  Bounds2i imageRegion;
   // The Film's output parameters ("compression", "half"); command-line flags override them.
   std::string exrCompression = "zip";
   bool exrHalf = false;

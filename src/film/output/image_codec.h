@@ -1,12 +1,14 @@
 // The narrow interface between candela and its image plug-in (candela_oiio.so, OpenImageIO):
-// read any image, write an 8-bit one. OpenImageIO and the ~250 libraries it pulls in (OpenCV,
-// FFmpeg, GStreamer, DICOM, OpenVDB...) cost every process 0.18 s of CPU, mostly dynamic linking,
-// and 128 MB resident, so candela loads the plug-in with dlopen only when a scene reads a non-EXR
-// image or a preview is written (DESIGN.md: leave out what the scene does not use). Both sides are
-// built from this tree by the same compiler; kImageCodecVersion guards against a stale plug-in.
+// read any image, write an 8-bit one, assemble tiles (`candela merge`). OpenImageIO and the ~250
+// libraries it pulls in (OpenCV, FFmpeg, GStreamer, DICOM, OpenVDB...) cost every process 0.18 s of
+// CPU, mostly dynamic linking, and 128 MB resident, so candela loads the plug-in with dlopen only
+// when a scene reads a non-EXR image or a preview is written (DESIGN.md: leave out what the scene
+// does not use). Both sides are built from this tree by the same compiler; kImageCodecVersion
+// guards against a stale plug-in.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "film/image_buffer.h"
 
@@ -33,10 +35,16 @@ class ImageCodec {
   // *error set if it cannot.
   virtual bool writeSrgb8(const std::string& path, const std::string& format, int width, int height,
                           const unsigned char* rgb, std::string* error) const = 0;
+  // Copies each tile's pixels into canvas at the tile's own data window (xOffset, yOffset; both
+  // in the display window's coordinates) with ImageBufAlgo::paste: `candela merge` assembling a
+  // render's tiles. canvas comes sized, placed and zeroed; the tiles have its channels, in its
+  // order, and lie within it. Returns false with *error set if they do not or OpenImageIO fails.
+  virtual bool pasteTiles(const std::vector<const ImageBuffer*>& tiles, ImageBuffer* canvas,
+                          std::string* error) const = 0;
 };
 
 // Bumped whenever ImageCodec, DecodedImage, ImageBuffer or ImageMetadata change layout.
-inline constexpr int kImageCodecVersion = 1;
+inline constexpr int kImageCodecVersion = 2;
 
 }  // namespace candela
 

@@ -1,5 +1,7 @@
 // The image plug-in (candela_oiio.so): ImageCodec on OpenImageIO. candela loads it with dlopen
 // only when it needs a format other than OpenEXR (film/output/image_codec.h).
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include <exception>
@@ -81,6 +83,37 @@ class OiioCodec final : public ImageCodec {
       return message.empty() || fail(error, message);
     } catch (const std::exception& e) {
       return fail(error, std::string("cannot write image: ") + e.what());
+    }
+  }
+
+  bool pasteTiles(const std::vector<const ImageBuffer*>& tiles, ImageBuffer* canvas,
+                  std::string* error) const override {
+    try {
+      const int nc = canvas->channelCount();
+      if (!canvas->consistent()) return fail(error, "the canvas is inconsistent");
+      // Both wrap candela's memory: nothing is copied but what paste copies.
+      OIIO::ImageSpec spec(canvas->width, canvas->height, nc, OIIO::TypeDesc::FLOAT);
+      spec.x = canvas->xOffset;
+      spec.y = canvas->yOffset;
+      spec.channelnames = canvas->channels;
+      OIIO::ImageBuf target(spec, canvas->data.data());
+      for (const ImageBuffer* tile : tiles) {
+        if (tile->channels != canvas->channels || !tile->consistent())
+          return fail(error, "a tile's channels are not the image's");
+        if (tile->xOffset < canvas->xOffset || tile->yOffset < canvas->yOffset ||
+            tile->xOffset + tile->width > canvas->xOffset + canvas->width ||
+            tile->yOffset + tile->height > canvas->yOffset + canvas->height)
+          return fail(error, "a tile lies outside the image");
+        const OIIO::ImageSpec tileSpec(tile->width, tile->height, nc, OIIO::TypeDesc::FLOAT);
+        // paste only reads the source.
+        const OIIO::ImageBuf source(tileSpec, const_cast<float*>(tile->data.data()));
+        // paste puts the source's pixel (0, 0) at (x, y) of the target's pixel coordinates.
+        if (!OIIO::ImageBufAlgo::paste(target, tile->xOffset, tile->yOffset, 0, 0, source))
+          return fail(error, target.geterror());
+      }
+      return true;
+    } catch (const std::exception& e) {
+      return fail(error, e.what());
     }
   }
 
