@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 machine to a built candela, then one of:
 #   tools/setup.sh render   build and render the default scene (scenes/cornell-box) to EXR + PNG
-#   tools/setup.sh test     build and run the whole test suite (what .ci/run calls)
+#   tools/setup.sh test     build and run the whole test suite (what .ci/run calls first; then
+#                           tools/ci-sanitizers.sh, with the clang 14 this installs)
 #   tools/setup.sh build    only install what is missing and build
 #   tools/setup.sh extras   also install the tools' packages (plots, convergence benchmark) and
 #                           build the benchmarks

@@ -1,10 +1,10 @@
 #include "integrators/photon_map_integrator.h"
 
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <cmath>
 
+#include "core/parallel_for.h"
 #include "integrators/light_sampling.h"
 
 namespace candela {
@@ -78,25 +78,23 @@ void PhotonMapIntegrator::computeRadiancePhotons(std::vector<RadiancePhotonSite>
   size_t nBlocks = (sites.size() + kBlock - 1) / kBlock;
   int threads = nThreads > 0 ? nThreads : tbb::info::default_concurrency();
   tbb::task_arena arena(threads);
-  arena.execute([&] {
-    tbb::parallel_for(size_t(0), nBlocks, [&](size_t b) {
-      MemoryArena mem;
-      for (size_t i = b * kBlock; i < std::min(sites.size(), (b + 1) * kBlock); ++i) {
-        const RadiancePhotonSite& site = sites[i];
-        Spectrum lo(0);
-        for (int side : {1, -1}) {
-          const Spectrum& rho = side > 0 ? site.rhoR : site.rhoT;
-          if (rho.isBlack()) continue;
-          Normal3f n = side > 0 ? site.n : -site.n;
-          Spectrum e = photonIrradiance(direct, site.p, n, estimate_, mem, true) +
-                       photonIrradiance(indirect_, site.p, n, estimate_, mem, true) +
-                       photonIrradiance(caustic_, site.p, n, estimate_, mem, true);
-          lo += rho * e * (1 / kPi);
-        }
-        photons[i] = RadiancePhoton{site.p, site.n, lo};
-        mem.reset();
+  parallelFor(arena, size_t(0), nBlocks, [&](size_t b) {
+    MemoryArena mem;
+    for (size_t i = b * kBlock; i < std::min(sites.size(), (b + 1) * kBlock); ++i) {
+      const RadiancePhotonSite& site = sites[i];
+      Spectrum lo(0);
+      for (int side : {1, -1}) {
+        const Spectrum& rho = side > 0 ? site.rhoR : site.rhoT;
+        if (rho.isBlack()) continue;
+        Normal3f n = side > 0 ? site.n : -site.n;
+        Spectrum e = photonIrradiance(direct, site.p, n, estimate_, mem, true) +
+                     photonIrradiance(indirect_, site.p, n, estimate_, mem, true) +
+                     photonIrradiance(caustic_, site.p, n, estimate_, mem, true);
+        lo += rho * e * (1 / kPi);
       }
-    });
+      photons[i] = RadiancePhoton{site.p, site.n, lo};
+      mem.reset();
+    }
   });
   radiance_ = RadiancePhotonMap(std::move(photons));
 }

@@ -1,6 +1,5 @@
 #include "integrators/photon_shooting.h"
 
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <algorithm>
@@ -8,6 +7,7 @@
 #include <limits>
 
 #include "accel/primitive.h"
+#include "core/parallel_for.h"
 #include "core/progress.h"
 #include "core/rng.h"
 #include "core/sampling.h"
@@ -205,13 +205,11 @@ PhotonShootingResult shootPhotons(const Scene& scene, const PhotonShootingPlan& 
     for (int k = 0; k < kPhotonKinds; ++k) accepting.kind[k] = !fills[k].done;
     uint64_t blocks = std::min(batchBlocks, (kMaxPaths - shot) / kBlockPaths);
     std::vector<BlockResult> results(blocks);
-    arena.execute([&] {
-      tbb::parallel_for(uint64_t(0), blocks, [&](uint64_t b) {
-        MemoryArena mem;
-        uint64_t first = shot + b * kBlockPaths;
-        for (uint64_t i = first; i < first + kBlockPaths; ++i)
-          tracer.trace(i, accepting, mem, &results[b], results[b].rays);
-      });
+    parallelFor(arena, uint64_t(0), blocks, [&](uint64_t b) {
+      MemoryArena mem;
+      uint64_t first = shot + b * kBlockPaths;
+      for (uint64_t i = first; i < first + kBlockPaths; ++i)
+        tracer.trace(i, accepting, mem, &results[b], results[b].rays);
     });
     // Concatenate in block order; a map that fills takes the photons of paths up to the one that
     // filled it, and divides by the number of paths up to that one.

@@ -1,12 +1,12 @@
 #include "integrators/subsurface_points.h"
 
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <cmath>
 #include <unordered_map>
 
 #include "accel/primitive.h"
+#include "core/parallel_for.h"
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "materials/material.h"
@@ -65,14 +65,12 @@ std::vector<Crossing> traceLines(const Scene& scene, const Point3f& center, Floa
   uint64_t blocks = (count + kBlock - 1) / kBlock;
   std::vector<std::vector<Crossing>> found(blocks);
   std::vector<RayStats> blockStats(blocks);
-  arena.execute([&] {
-    tbb::parallel_for(uint64_t(0), blocks, [&](uint64_t b) {
-      for (uint64_t i = first + b * kBlock; i < std::min(first + count, first + (b + 1) * kBlock);
-           ++i) {
-        RNG rng(i, familySeed);
-        traceLine(scene, center, radius, time, rng, &found[b], blockStats[b]);
-      }
-    });
+  parallelFor(arena, uint64_t(0), blocks, [&](uint64_t b) {
+    for (uint64_t i = first + b * kBlock; i < std::min(first + count, first + (b + 1) * kBlock);
+         ++i) {
+      RNG rng(i, familySeed);
+      traceLine(scene, center, radius, time, rng, &found[b], blockStats[b]);
+    }
   });
   std::vector<Crossing> all;
   for (uint64_t b = 0; b < blocks; ++b) {
@@ -223,32 +221,30 @@ void computeDirectIrradiance(const Scene& scene, uint64_t seed, int nThreads, Fl
   size_t n = set->points.size();
   size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<RayStats> blockStats(blocks);
-  arena.execute([&] {
-    tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
-      for (size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
-        SubsurfacePoint& sp = set->points[i];
-        RNG rng(i, familySeed);
-        Interaction ref(sp.p, sp.n, sp.pError, Vector3f(sp.n), set->time);
-        Spectrum e(0);
-        for (const Light* light : scene.lights()) {
-          int samples = std::max(1, int(std::lround(light->nSamples() * sampleScale)));
-          Spectrum sum(0);
-          for (int s = 0; s < samples; ++s) {
-            Float u0 = rng.uniformFloat(), u1 = rng.uniformFloat();
-            Vector3f wi;
-            Float pdf = 0;
-            VisibilityTester vis;
-            Spectrum li = light->sampleLi(ref, {u0, u1}, &wi, &pdf, &vis);
-            if (pdf == 0 || li.isBlack()) continue;
-            Float cosTheta = absDot(wi, sp.n);
-            if (cosTheta == 0 || !scene.unoccluded(vis, blockStats[b])) continue;
-            sum += li * (cosTheta / pdf);
-          }
-          e += sum / Float(samples);
+  parallelFor(arena, size_t(0), blocks, [&](size_t b) {
+    for (size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
+      SubsurfacePoint& sp = set->points[i];
+      RNG rng(i, familySeed);
+      Interaction ref(sp.p, sp.n, sp.pError, Vector3f(sp.n), set->time);
+      Spectrum e(0);
+      for (const Light* light : scene.lights()) {
+        int samples = std::max(1, int(std::lround(light->nSamples() * sampleScale)));
+        Spectrum sum(0);
+        for (int s = 0; s < samples; ++s) {
+          Float u0 = rng.uniformFloat(), u1 = rng.uniformFloat();
+          Vector3f wi;
+          Float pdf = 0;
+          VisibilityTester vis;
+          Spectrum li = light->sampleLi(ref, {u0, u1}, &wi, &pdf, &vis);
+          if (pdf == 0 || li.isBlack()) continue;
+          Float cosTheta = absDot(wi, sp.n);
+          if (cosTheta == 0 || !scene.unoccluded(vis, blockStats[b])) continue;
+          sum += li * (cosTheta / pdf);
         }
-        sp.E = e;
+        e += sum / Float(samples);
       }
-    });
+      sp.E = e;
+    }
   });
   for (const RayStats& s : blockStats) set->rays += s;
 }

@@ -1,7 +1,6 @@
 #include "renderers/sampler_renderer.h"
 
 #include <oneapi/tbb/enumerable_thread_specific.h>
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <atomic>
@@ -9,6 +8,7 @@
 
 #include "accel/embree/embree_device.h"
 #include "core/interrupt.h"
+#include "core/parallel_for.h"
 #include "core/progress.h"
 #include "renderers/aov_sampler.h"
 
@@ -139,7 +139,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
 
   int threads = options.nThreads > 0 ? options.nThreads : tbb::info::default_concurrency();
   tbb::task_arena taskArena(threads);
-  taskArena.execute([&] { tbb::parallel_for(0, nx * ny, [&](int i) { renderTile(i); }); });
+  parallelFor(taskArena, 0, nx * ny, [&](int i) { renderTile(i); });
   progress.done();
 
   RenderResult result;

@@ -1,6 +1,5 @@
 #include "renderers/sppm_renderer.h"
 
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 
 #include "accel/embree/embree_device.h"
 #include "accel/primitive.h"
+#include "core/parallel_for.h"
 #include "core/progress.h"
 #include "core/rng.h"
 #include "core/sampling.h"
@@ -305,14 +305,12 @@ ProgressiveResult SppmRenderer::render(const Scene& scene, const Camera& camera,
     }
     // Camera pass: one path per pixel, rows in parallel (a row's arena holds its BSDFs until the
     // photons have been gathered).
-    arena.execute([&] {
-      tbb::parallel_for(0, height, [&](int y) {
-        enableFlushToZero();  // Embree asks for FTZ/DAZ on every tracing thread
-        rowArenas[y].reset();
-        for (int x = 0; x < width; ++x)
-          iteration.cameraPath(Point2i(bounds.pMin.x + x, bounds.pMin.y + y), k,
-                               pixels[size_t(y) * width + x], rowArenas[y], rowRays[y]);
-      });
+    parallelFor(arena, 0, height, [&](int y) {
+      enableFlushToZero();  // Embree asks for FTZ/DAZ on every tracing thread
+      rowArenas[y].reset();
+      for (int x = 0; x < width; ++x)
+        iteration.cameraPath(Point2i(bounds.pMin.x + x, bounds.pMin.y + y), k,
+                             pixels[size_t(y) * width + x], rowArenas[y], rowRays[y]);
     });
     std::vector<GridPoint> points;
     std::vector<uint32_t> pointPixel;
@@ -332,18 +330,16 @@ ProgressiveResult SppmRenderer::render(const Scene& scene, const Camera& camera,
       int64_t b1 = std::min(nBlocks, b0 + kBlocksPerBatch);
       std::vector<std::vector<Deposit>> deposits(size_t(b1 - b0));
       std::vector<RayStats> blockRays(size_t(b1 - b0));
-      arena.execute([&] {
-        tbb::parallel_for(b0, b1, [&](int64_t b) {
-          enableFlushToZero();
-          MemoryArena mem;
-          int64_t end = std::min(photons, (b + 1) * kBlockPhotons);
-          for (int64_t i = b * kBlockPhotons; i < end; ++i) {
-            iteration.photonPath(uint64_t(k) * uint64_t(photons) + uint64_t(i), grid, pointPixel,
-                                 shutterOpen, shutterClose, shift, mem, &deposits[b - b0],
-                                 blockRays[b - b0]);
-            mem.reset();
-          }
-        });
+      parallelFor(arena, b0, b1, [&](int64_t b) {
+        enableFlushToZero();
+        MemoryArena mem;
+        int64_t end = std::min(photons, (b + 1) * kBlockPhotons);
+        for (int64_t i = b * kBlockPhotons; i < end; ++i) {
+          iteration.photonPath(uint64_t(k) * uint64_t(photons) + uint64_t(i), grid, pointPixel,
+                               shutterOpen, shutterClose, shift, mem, &deposits[b - b0],
+                               blockRays[b - b0]);
+          mem.reset();
+        }
       });
       for (size_t b = 0; b < deposits.size(); ++b) {
         for (const Deposit& d : deposits[b]) {
@@ -357,22 +353,20 @@ ProgressiveResult SppmRenderer::render(const Scene& scene, const Camera& camera,
     stats.photonsShot += uint64_t(photons);
 
     // Progressive radiance estimate update (Hachisuka & Jensen 2009 eq. 6-10; pbrt 3e §16.2.4).
-    arena.execute([&] {
-      tbb::parallel_for(size_t(0), pixels.size(), [&](size_t i) {
-        PixelState& px = pixels[i];
-        if (px.m > 0) {
-          double nNew = px.n + kAlpha * double(px.m);
-          double rNew = px.radius * std::sqrt(nNew / (px.n + double(px.m)));
-          double shrink = (rNew * rNew) / (px.radius * px.radius);
-          for (int c = 0; c < 3; ++c)
-            px.tau[c] = (px.tau[c] + double(px.vp.beta[c]) * px.phi[c]) * shrink;
-          px.n = nNew;
-          px.radius = rNew;
-        }
-        for (double& v : px.phi) v = 0;
-        px.m = 0;
-        px.vp = VisiblePoint{};
-      });
+    parallelFor(arena, size_t(0), pixels.size(), [&](size_t i) {
+      PixelState& px = pixels[i];
+      if (px.m > 0) {
+        double nNew = px.n + kAlpha * double(px.m);
+        double rNew = px.radius * std::sqrt(nNew / (px.n + double(px.m)));
+        double shrink = (rNew * rNew) / (px.radius * px.radius);
+        for (int c = 0; c < 3; ++c)
+          px.tau[c] = (px.tau[c] + double(px.vp.beta[c]) * px.phi[c]) * shrink;
+        px.n = nNew;
+        px.radius = rNew;
+      }
+      for (double& v : px.phi) v = 0;
+      px.m = 0;
+      px.vp = VisiblePoint{};
     });
     for (int y = 0; y < height; ++y) {
       result.total.rays += rowRays[y];

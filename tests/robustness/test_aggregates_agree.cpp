@@ -24,7 +24,7 @@
 // required to be under a tenth of the rays); they are still compared with the brute-force loop.
 #include <gtest/gtest.h>
 
-#include <tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
 
 #include <atomic>
 #include <cstdio>
@@ -32,6 +32,7 @@
 
 #include "accel/aggregate_factory.h"
 #include "accel/embree/embree_device.h"
+#include "core/parallel_for.h"
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "scene/shape_factory.h"
@@ -489,7 +490,8 @@ void runAgreement(uint64_t nRays) {
   }
 
   Tally tally;
-  tbb::parallel_for(uint64_t(0), nRays, [&](uint64_t i) {
+  tbb::task_arena arena;
+  parallelFor(arena, uint64_t(0), nRays, [&](uint64_t i) {
     enableFlushToZero();
     Ray ray = makeRay(i, bounds, *embree);
     BruteForce::Candidates candidates = brute.candidates(ray);

@@ -162,7 +162,10 @@ TEST(EmbreeInstances, AgreeWithFlattenedShapes) {
     if (a.primitive != s.flatToProto[fi]) ++primMismatch;
     double rel = std::abs(double(r1.tMax) - r2.tMax) / r2.tMax;
     maxRelT = std::max(maxRelT, rel);
-    if (rel > 1e-4) ++tMismatch;
+    // Relative to the distance, but a hit a few float steps from the origin (t ~ 1e-5) differs
+    // by the rounding of the ray in the instance's space: within the points' error bounds.
+    double apart = std::abs(double(r1.tMax) - r2.tMax) * d.length();
+    if (rel > 1e-4 && apart > a.pError.length() + b.pError.length()) ++tMismatch;
     maxP = std::max(maxP, double(distance(a.p, b.p)));
     minNormalDot = std::min(minNormalDot, double(dot(a.n, b.n)));
     EXPECT_NEAR(a.n.length(), 1, 1e-4);

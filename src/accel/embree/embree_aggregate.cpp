@@ -46,7 +46,9 @@ EmbreeAggregate::EmbreeAggregate(const EmbreeDevice& device, const Primitive* pr
     rtcSetSceneBuildQuality(scene_, embreeQuality(quality_));
     addPrimitives(primitives, count);
     if (geometry) addInstances(*geometry);
+    for (const auto& g : geometries_) releaseOrder(g.get());  // BoundsCallbackOrder
     rtcCommitScene(scene_);
+    for (const auto& g : geometries_) acquireOrder(boundsDoneAddress(g.get()));
     device_->check("rtcCommitScene");
   } catch (...) {
     rtcReleaseScene(scene_);

@@ -100,6 +100,7 @@ void toEmbreeRay(const Ray& ray, RTCRay* r) {
 }
 
 void shapeBounds(const RTCBoundsFunctionArguments* args) {
+  BoundsCallbackOrder order(args->geometryUserPtr);
   writeBounds(geometryOf(args->geometryUserPtr).primitive(args->primID).shape->worldBound(),
               args->bounds_o);
 }
@@ -130,6 +131,7 @@ void shapeOccluded(const RTCOccludedFunctionNArguments* args) {
 }
 
 void motionBounds(const RTCBoundsFunctionArguments* args) {
+  BoundsCallbackOrder order(args->geometryUserPtr);
   writeBounds(geometryOf(args->geometryUserPtr).motion[args->primID].bound, args->bounds_o);
 }
 

@@ -9,6 +9,7 @@
 
 #include "accel/primitive.h"
 #include "core/animated_transform.h"
+#include "core/happens_before.h"
 
 namespace candela {
 
@@ -75,6 +76,19 @@ struct QueryContext {
 
 // The ray as Embree wants it, over (0, tMax).
 void toEmbreeRay(const Ray& ray, RTCRay* r);
+
+// A scene build runs the bounds callbacks on TBB's threads inside Embree; its two orders, declared
+// to ThreadSanitizer (core/happens_before.h): the geometry as attached happens before each
+// callback (address: the geometry's), each callback before rtcCommitScene returns (address: the
+// byte after it, so that the callbacks are not ordered with each other).
+inline const void* boundsDoneAddress(const void* geometry) {
+  return static_cast<const char*>(geometry) + 1;
+}
+struct BoundsCallbackOrder {
+  const void* geometry;
+  explicit BoundsCallbackOrder(const void* g) : geometry(g) { acquireOrder(g); }
+  ~BoundsCallbackOrder() { releaseOrder(boundsDoneAddress(geometry)); }
+};
 
 // Callbacks for Kind::Shapes (user data: the EmbreeGeometry).
 void shapeBounds(const RTCBoundsFunctionArguments* args);

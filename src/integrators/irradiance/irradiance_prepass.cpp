@@ -1,13 +1,13 @@
 #include "integrators/irradiance/irradiance_prepass.h"
 
 #include <oneapi/tbb/enumerable_thread_specific.h>
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <atomic>
 #include <memory>
 
 #include "cameras/camera.h"
+#include "core/parallel_for.h"
 #include "core/progress.h"
 #include "core/rng.h"
 #include "integrators/irradiance/irradiance_interpolation.h"
@@ -69,23 +69,21 @@ PrepassResult fillIrradianceCache(IrradianceOctree& cache, const Camera& camera,
     // 1. Camera rays through the pixel centres (lens centre, mid-shutter), with differentials one
     // pixel apart so that pixel spacings are in pixels of this image.
     std::vector<std::vector<IrradianceQuery>> found(nPixels);
-    arena.execute([&] {
-      tbb::parallel_for(size_t(0), nPixels, [&](size_t i) {
-        if (options.setUpThread) options.setUpThread();
-        WorkerCounters& c = counters.local();
-        const Point2i& pixel = pixels[begin + i];
-        std::unique_ptr<Sampler> s = sampler.clone();
-        s->startPixelSample(pixel, 0);
-        MemoryArena memory;
-        IntegratorContext ctx{*s, memory, c.rays};
-        CameraSample cs;
-        cs.pFilm = Point2f(Float(pixel.x) + 0.5f, Float(pixel.y) + 0.5f);
-        cs.pLens = Point2f(0.5f, 0.5f);
-        cs.time = 0.5f;
-        RayDifferential ray;
-        ++c.rays.cameraRays;
-        if (camera.generateRayDifferential(cs, &ray) > 0) findUncached(ray, ctx, &found[i]);
-      });
+    parallelFor(arena, size_t(0), nPixels, [&](size_t i) {
+      if (options.setUpThread) options.setUpThread();
+      WorkerCounters& c = counters.local();
+      const Point2i& pixel = pixels[begin + i];
+      std::unique_ptr<Sampler> s = sampler.clone();
+      s->startPixelSample(pixel, 0);
+      MemoryArena memory;
+      IntegratorContext ctx{*s, memory, c.rays};
+      CameraSample cs;
+      cs.pFilm = Point2f(Float(pixel.x) + 0.5f, Float(pixel.y) + 0.5f);
+      cs.pLens = Point2f(0.5f, 0.5f);
+      cs.time = 0.5f;
+      RayDifferential ray;
+      ++c.rays.cameraRays;
+      if (camera.generateRayDifferential(cs, &ray) > 0) findUncached(ray, ctx, &found[i]);
     });
 
     // 2. Number the points in pixel order; drop those that the kept points before them will
@@ -121,14 +119,12 @@ PrepassResult fillIrradianceCache(IrradianceOctree& cache, const Camera& camera,
 
     // 3. Estimate in parallel, each from its own number; insert in number order.
     std::vector<IrradianceSample> samples(jobs.size());
-    arena.execute([&] {
-      tbb::parallel_for(size_t(0), jobs.size(), [&](size_t k) {
-        if (options.setUpThread) options.setUpThread();
-        WorkerCounters& c = counters.local();
-        samples[k] =
-            compute(jobs[k].query, hashValues({seed, uint64_t(round), jobs[k].number}), c.rays);
-        if (pending[jobs[k].pixel].fetch_sub(1) == 1) progress.update(1);
-      });
+    parallelFor(arena, size_t(0), jobs.size(), [&](size_t k) {
+      if (options.setUpThread) options.setUpThread();
+      WorkerCounters& c = counters.local();
+      samples[k] =
+          compute(jobs[k].query, hashValues({seed, uint64_t(round), jobs[k].number}), c.rays);
+      if (pending[jobs[k].pixel].fetch_sub(1) == 1) progress.update(1);
     });
     for (const IrradianceSample& s : samples) cache.add(s);
     result.estimated += samples.size();

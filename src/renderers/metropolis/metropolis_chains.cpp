@@ -1,7 +1,6 @@
 #include "renderers/metropolis/metropolis_chains.h"
 
 #include <oneapi/tbb/enumerable_thread_specific.h>
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <chrono>
@@ -9,6 +8,7 @@
 
 #include "accel/embree/embree_device.h"
 #include "core/interrupt.h"
+#include "core/parallel_for.h"
 #include "core/progress.h"
 #include "core/sampling.h"
 #include "film/splat_buffer.h"
@@ -146,14 +146,12 @@ RenderResult runMetropolisChains(const MetropolisSettings& settings, const BdptI
   {
     ProgressReporter progress(nBootstrap, "Bootstrapping",
                               ProgressReporter::modeFor(options.quiet));
-    taskArena.execute([&] {
-      tbb::parallel_for(int64_t(0), nBootstrap, [&](int64_t k) {
-        enableFlushToZero();
-        ThreadState& ts = threadStates.local();
-        PrimarySamples state = startState(settings, seed, uint64_t(k));
-        weights[size_t(k)] = evaluator.evaluate(state, int(k % depths), ts).y;
-        progress.update(1);
-      });
+    parallelFor(taskArena, int64_t(0), nBootstrap, [&](int64_t k) {
+      enableFlushToZero();
+      ThreadState& ts = threadStates.local();
+      PrimarySamples state = startState(settings, seed, uint64_t(k));
+      weights[size_t(k)] = evaluator.evaluate(state, int(k % depths), ts).y;
+      progress.update(1);
     });
   }
   double sum = 0;
@@ -211,7 +209,7 @@ RenderResult runMetropolisChains(const MetropolisSettings& settings, const BdptI
       }
       progress.update(1);
     };
-    taskArena.execute([&] { tbb::parallel_for(0, chains, [&](int c) { runChain(c); }); });
+    parallelFor(taskArena, 0, chains, [&](int c) { runChain(c); });
   }
 
   RenderResult result;
