@@ -41,6 +41,9 @@ scene=$src/scenes/cornell-box/cornell-box.pbrt
 opts=(--spp 64 --seed 5)
 "$candela" "$scene" "${opts[@]}" -o local.exr --preview none -q &
 local_render=$!
+# Task 3 renders many more samples until slow-task-3 is removed, so that the scancel below finds it
+# mid-render however fast the machine is (at 64 spp it could finish before the cancel arrived).
+touch slow-task-3
 cat > flaky-candela << FLAKY
 #!/bin/bash
 # Fails the first try of task 1, as a node lost mid-task would.
@@ -48,7 +51,11 @@ if [ "\${SLURM_ARRAY_TASK_ID:-}" = 1 ] && [ "\${SLURM_RESTART_COUNT:-0}" = 0 ]; 
   echo "flaky-candela: failing on purpose" >&2
   exit 1
 fi
-exec $(printf %q "$candela") "\$@"
+args=("\$@")
+if [ "\${SLURM_ARRAY_TASK_ID:-}" = 3 ] && [ -e $(printf %q "$work/slow-task-3") ]; then
+  for i in "\${!args[@]}"; do [ "\${args[i]}" = --spp ] && args[i+1]=1000000; done
+fi
+exec $(printf %q "$candela") "\${args[@]}"
 FLAKY
 chmod +x flaky-candela
 submit=(bash "$src/tools/candela-submit" -o "$work/farm.exr" --tiles 4 --candela "$work/flaky-candela")
@@ -103,6 +110,7 @@ if "$candela" merge --tiles 4 -o by-hand.exr farm.farm/pieces/*.exr 2> by-hand.t
 fi
 grep -q "frame 0 tile 3/4" by-hand.txt && [ ! -e by-hand.exr ] || fail "$(cat by-hand.txt)"
 
+rm slow-task-3
 bash "$src/tools/candela-submit" --resume "$work/farm.farm" > resume.txt
 cat resume.txt
 grep -q "tasks 3 again" resume.txt || fail "--resume did not send task 3 alone"
