@@ -55,16 +55,19 @@ std::string ReferenceAgreement::describe(const ReferenceRegion& r) const {
   std::ostringstream s;
   s << "region (" << r.regionX << ", " << r.regionY << ") channel "
     << "RGB"[r.channel] << ": render mean " << r.renderMean << ", reference mean "
-    << r.referenceMean << ", F " << r.ratio << " with " << r.degreesOfFreedom
-    << " degrees of freedom, p " << r.pValue << " (whole image: mean ratio " << meanRatio
-    << ", relMSE " << relMse << ")";
+    << r.referenceMean << ", F " << r.ratio << " with (" << r.degreesOfFreedom << ", "
+    << r.denominatorDegreesOfFreedom << ") degrees of freedom, p " << r.pValue
+    << " (whole image: mean ratio " << meanRatio << ", relMSE " << relMse << ")";
   return s.str();
 }
 
-ReferenceAgreement compareWithReference(const ImageBuffer& a, const ImageBuffer& b,
+ReferenceAgreement compareWithReference(const std::vector<const ImageBuffer*>& renders,
                                         const ImageBuffer& reference,
                                         const ReferenceAgreementOptions& o) {
-  for (const ImageBuffer* image : {&a, &b, &reference})
+  if (renders.size() < 2) throw std::invalid_argument("at least two renders are needed");
+  std::vector<const ImageBuffer*> images = renders;
+  images.push_back(&reference);
+  for (const ImageBuffer* image : images)
     if (image->width != reference.width || image->height != reference.height ||
         image->channelCount() < 3)
       throw std::invalid_argument("images of different sizes or without RGB");
@@ -76,6 +79,8 @@ ReferenceAgreement compareWithReference(const ImageBuffer& a, const ImageBuffer&
     throw std::invalid_argument("the region grid does not divide the blocks");
   const int perRegionX = blocksX / o.regions, perRegionY = blocksY / o.regions;
   const double referenceShare = 1 + 2.0 * o.samplesPerPixel / o.referenceSamplesPerPixel;
+  const int k = int(renders.size());
+  std::vector<double> means(k);
 
   ReferenceAgreement out;
   double sumRender = 0, sumReference = 0, sumRel = 0;
@@ -89,11 +94,14 @@ ReferenceAgreement compareWithReference(const ImageBuffer& a, const ImageBuffer&
         double numerator = 0, denominator = 0, noiseSquares = 0;
         for (int by = ry * perRegionY; by < (ry + 1) * perRegionY; ++by)
           for (int bx = rx * perRegionX; bx < (rx + 1) * perRegionX; ++bx) {
-            const double ma = blockMean(a, bx, by, o.block, c);
-            const double mb = blockMean(b, bx, by, o.block, c);
+            double m = 0;
+            for (int i = 0; i < k; ++i) m += means[i] = blockMean(*renders[i], bx, by, o.block, c);
+            m /= k;
+            double squares = 0;
+            for (double mi : means) squares += (mi - m) * (mi - m);
+            // The sample variance over K: the variance of m.
+            const double noise = squares / (double(k - 1) * k) * referenceShare;
             const double r = blockMean(reference, bx, by, o.block, c);
-            const double m = (ma + mb) / 2;
-            const double noise = (ma - mb) * (ma - mb) / 4 * referenceShare;
             // The reference's rounding to its storage is not noise: a difference within it is
             // none.
             const double rounding =
@@ -118,17 +126,22 @@ ReferenceAgreement compareWithReference(const ImageBuffer& a, const ImageBuffer&
         if (denominator <= 0) {
           region.ratio = numerator > 0 ? INFINITY : 0;
           region.degreesOfFreedom = blocks;
+          region.denominatorDegreesOfFreedom = double(k - 1) * blocks;
         } else {
           region.ratio = numerator / denominator;
-          // A sum of scaled chi-squares with one degree of freedom each: E d^2 = 3 v^2, so
-          // Var(sum) = 2 sum v^2 = (2/3) sum d^2, and Satterthwaite's nu = 2 E^2 / Var.
+          // The numerator is a sum of v chi-squares with one degree of freedom each, the
+          // denominator of v chi-squares with K - 1 each, scaled by 1 / (K - 1), v unknown.
+          // Satterthwaite's nu = 2 E^2 / Var: (sum v)^2 / sum v^2 for the numerator, K - 1 times
+          // that for the denominator; and E d^2 = v^2 (K + 1) / (K - 1) estimates sum v^2.
           region.degreesOfFreedom =
-              noiseSquares > 0
-                  ? std::min<double>(blocks, 3 * denominator * denominator / noiseSquares)
-                  : blocks;
+              noiseSquares > 0 ? std::min<double>(blocks, double(k + 1) / (k - 1) * denominator *
+                                                              denominator / noiseSquares)
+                               : blocks;
           region.degreesOfFreedom = std::max(region.degreesOfFreedom, 1.0);
+          region.denominatorDegreesOfFreedom = double(k - 1) * region.degreesOfFreedom;
         }
-        region.pValue = fSurvival(region.ratio, region.degreesOfFreedom, region.degreesOfFreedom);
+        region.pValue =
+            fSurvival(region.ratio, region.degreesOfFreedom, region.denominatorDegreesOfFreedom);
         out.regions.push_back(region);
       }
   out.meanRatio = sumReference > 0 ? sumRender / sumReference : 0;

@@ -1,15 +1,21 @@
 // Does a render agree with a reference image made by another renderer with many more samples?
-// The tolerance comes from the render's own noise, measured by rendering twice with different
-// seeds (a, b): per block of block x block pixels and per channel, d = (a - b)^2 / 4 estimates the
-// variance of m = (a + b) / 2 without bias. The reference's own noise adds a share n / N of the
-// per-render variance (n, N samples per pixel); differences within the rounding of the reference's
-// storage (half floats) are not counted. Over each region of a regions x regions grid, per channel,
+// The tolerance comes from the render's own noise, measured by rendering K >= 2 times with
+// different seeds: per block of block x block pixels and per channel, the K block means' sample
+// variance over K estimates the variance of their mean m without bias, with K - 1 degrees of
+// freedom (K = 2: (a - b)^2 / 4). The reference's own noise adds a share n / N of the per-render
+// variance (n, N samples per pixel); differences within the rounding of the reference's storage
+// (half floats) are not counted. Over each region of a regions x regions grid, per channel,
 //   F = sum (|m - r| - rounding)+^2 / (sum d (1 + 2n/N) + blocks (resolution mean r)^2)
 // is a ratio of two sums with the same expectation when the renders agree: an F ratio whose
-// degrees of freedom are Satterthwaite's estimate from the blocks' variances (fewer than the
-// block count where a few noisy blocks dominate). Its upper tail comes from Paulson's normal
-// approximation of the F distribution (Johnson, Kotz & Balakrishnan, Continuous Univariate
-// Distributions vol. 2, ch. 27).
+// degrees of freedom are Satterthwaite's estimates from the blocks' variances (fewer than the
+// block count where a few noisy blocks dominate; the denominator's K - 1 times the numerator's).
+// Its upper tail comes from Paulson's normal approximation of the F distribution (Johnson, Kotz &
+// Balakrishnan, Continuous Univariate Distributions vol. 2, ch. 27).
+//
+// With K = 2 each block's variance estimate is one chi-square degree of freedom: a quarter of them
+// fall below a tenth of the true variance, and where one block carries most of a region's noise
+// the test's nominal level is not its real one. Four renders (three degrees of freedom per block)
+// make that rare, and their mean has half the noise of two, which finds smaller biases.
 #pragma once
 
 #include <string>
@@ -21,9 +27,10 @@ namespace candela::test {
 
 struct ReferenceRegion {
   int regionX = 0, regionY = 0, channel = 0;
-  double ratio = 0;             // F
-  double degreesOfFreedom = 0;  // Satterthwaite's, for numerator and denominator alike
-  double pValue = 1;            // P(F >= ratio) if render and reference agree
+  double ratio = 0;                        // F
+  double degreesOfFreedom = 0;             // Satterthwaite's, the numerator's
+  double denominatorDegreesOfFreedom = 0;  // (K - 1) times the numerator's
+  double pValue = 1;                       // P(F >= ratio) if render and reference agree
   double renderMean = 0, referenceMean = 0;
 };
 
@@ -48,11 +55,18 @@ struct ReferenceAgreementOptions {
   bool referenceIsHalf = true;  // stored as half floats: ignore differences within their rounding
 };
 
-// a, b and reference: the same size, at least 3 channels (the first three, R G B, are compared);
-// the block size must divide the image size and the region count the block grid.
-ReferenceAgreement compareWithReference(const ImageBuffer& a, const ImageBuffer& b,
+// renders (at least two, each with its own seed) and reference: the same size, at least 3 channels
+// (the first three, R G B, are compared); the block size must divide the image size and the region
+// count the block grid.
+ReferenceAgreement compareWithReference(const std::vector<const ImageBuffer*>& renders,
                                         const ImageBuffer& reference,
                                         const ReferenceAgreementOptions& options);
+
+inline ReferenceAgreement compareWithReference(const ImageBuffer& a, const ImageBuffer& b,
+                                               const ImageBuffer& reference,
+                                               const ReferenceAgreementOptions& options) {
+  return compareWithReference({&a, &b}, reference, options);
+}
 
 // Upper tail of the F distribution with (d1, d2) degrees of freedom at x (Paulson's
 // approximation; accurate to a few per cent of the tail probability for d1, d2 >= 10).

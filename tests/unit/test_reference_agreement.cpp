@@ -22,17 +22,24 @@ TEST(ReferenceAgreement, FSurvivalMatchesTables) {
 }
 
 struct Synthetic {
-  ImageBuffer a, b, reference;
+  std::vector<ImageBuffer> renders;
+  ImageBuffer reference;
+  std::vector<const ImageBuffer*> all() const {
+    std::vector<const ImageBuffer*> out;
+    for (const ImageBuffer& r : renders) out.push_back(&r);
+    return out;
+  }
 };
 
 // A smooth image plus per-pixel Gaussian noise whose deviation is sigma(x, y) at n samples per
-// pixel (the reference: at 1024), and `bias` added to the renders in the top-left region.
+// pixel (the reference: at 1024), and `bias` added to the renders in the top-left region; `count`
+// renders.
 template <typename Sigma>
-Synthetic makeImages(uint32_t seed, Sigma sigma, double bias = 0) {
+Synthetic makeImages(uint32_t seed, Sigma sigma, double bias = 0, int count = 2) {
   const int size = 64, n = 16, referenceN = 1024;
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal;
-  Synthetic s{ImageBuffer(size, size, {"R", "G", "B"}), ImageBuffer(size, size, {"R", "G", "B"}),
+  Synthetic s{std::vector<ImageBuffer>(count, ImageBuffer(size, size, {"R", "G", "B"})),
               ImageBuffer(size, size, {"R", "G", "B"})};
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x)
@@ -40,8 +47,7 @@ Synthetic makeImages(uint32_t seed, Sigma sigma, double bias = 0) {
         const double truth = 1 + 0.5 * std::sin(0.1 * x + c) * std::cos(0.07 * y);
         const double sd = sigma(x, y);
         const double shift = (x < 16 && y < 16) ? bias : 0;
-        s.a.at(x, y, c) = float(truth + shift + sd * normal(rng));
-        s.b.at(x, y, c) = float(truth + shift + sd * normal(rng));
+        for (ImageBuffer& r : s.renders) r.at(x, y, c) = float(truth + shift + sd * normal(rng));
         s.reference.at(x, y, c) =
             float(truth + sd * std::sqrt(double(n) / referenceN) * normal(rng));
       }
@@ -61,12 +67,11 @@ ReferenceAgreementOptions options() {
 // the binomial 99.9% interval around 0.05 (about 0.034-0.069), widened for the approximations to
 // 0.025-0.08; likewise below 0.5.
 template <typename Sigma>
-void expectCalibrated(Sigma sigma) {
+void expectCalibrated(Sigma sigma, int renders = 2) {
   int below5 = 0, below50 = 0, total = 0;
   for (uint32_t seed = 1; seed <= 40; ++seed) {
-    Synthetic s = makeImages(seed, sigma);
-    for (const ReferenceRegion& r :
-         compareWithReference(s.a, s.b, s.reference, options()).regions) {
+    Synthetic s = makeImages(seed, sigma, 0, renders);
+    for (const ReferenceRegion& r : compareWithReference(s.all(), s.reference, options()).regions) {
       below5 += r.pValue < 0.05;
       below50 += r.pValue < 0.5;
       ++total;
@@ -87,13 +92,69 @@ TEST(ReferenceAgreement, CalibratedWhenAFewBlocksCarryMostNoise) {
   expectCalibrated([](int x, int) { return (x / 4) % 8 == 0 ? 3.0 : 0.1; });
 }
 
+TEST(ReferenceAgreement, CalibratedWithFourRenders) {
+  expectCalibrated([](int, int) { return 0.2; }, 4);
+  expectCalibrated([](int x, int) { return (x / 4) % 8 == 0 ? 3.0 : 0.1; }, 4);
+}
+
+TEST(ReferenceAgreement, TwoRendersGiveTheTwoRenderStatistic) {
+  // With K = 2 the variance estimate is (a - b)^2 / 4 and both degrees of freedom are
+  // 3 (sum d)^2 / sum d^2: computed here by hand for one region.
+  Synthetic s = makeImages(9, [](int x, int) { return (x / 4) % 8 == 0 ? 3.0 : 0.1; });
+  ReferenceAgreementOptions o = options();
+  ReferenceAgreement agreement = compareWithReference(s.all(), s.reference, o);
+  const ReferenceRegion& r = agreement.regions.front();  // region (0, 0), channel R
+  double sum = 0, squares = 0, numerator = 0;
+  const double share = 1 + 2.0 * o.samplesPerPixel / o.referenceSamplesPerPixel;
+  for (int by = 0; by < 4; ++by)
+    for (int bx = 0; bx < 4; ++bx) {
+      double ma = 0, mb = 0, mr = 0;
+      for (int y = 4 * by; y < 4 * by + 4; ++y)
+        for (int x = 4 * bx; x < 4 * bx + 4; ++x) {
+          ma += s.renders[0].at(x, y, 0) / 16.0;
+          mb += s.renders[1].at(x, y, 0) / 16.0;
+          mr += s.reference.at(x, y, 0) / 16.0;
+        }
+      const double d = (ma - mb) * (ma - mb) / 4 * share;
+      sum += d;
+      squares += d * d;
+      numerator += ((ma + mb) / 2 - mr) * ((ma + mb) / 2 - mr);
+    }
+  EXPECT_NEAR(r.ratio, numerator / sum, 1e-9 * r.ratio);
+  EXPECT_NEAR(r.degreesOfFreedom, std::min(16.0, 3 * sum * sum / squares), 1e-9);
+  EXPECT_EQ(r.denominatorDegreesOfFreedom, r.degreesOfFreedom);
+}
+
+TEST(ReferenceAgreement, FourRendersFindHalfTheBiasTwoFind) {
+  // Four renders' mean has half the variance of two: a bias that two renders leave below the
+  // conformance level in the top-left region (0.08, 1.6 block deviations) is found with four.
+  auto worstTopLeft = [](int renders) {
+    Synthetic s = makeImages(
+        13, [](int, int) { return 0.2; }, 0.08, renders);
+    ReferenceAgreement agreement = compareWithReference(s.all(), s.reference, options());
+    double p = 1;
+    for (const ReferenceRegion& r : agreement.regions)
+      if (r.regionX == 0 && r.regionY == 0) p = std::min(p, r.pValue);
+    return p;
+  };
+  const double level = stats::sidak(0.001, 48);
+  EXPECT_GT(worstTopLeft(2), level);
+  EXPECT_LT(worstTopLeft(4), level);
+}
+
+TEST(ReferenceAgreement, OneRenderIsRefused) {
+  Synthetic s = makeImages(
+      1, [](int, int) { return 0.2; }, 0, 1);
+  EXPECT_THROW(compareWithReference(s.all(), s.reference, options()), std::invalid_argument);
+}
+
 TEST(ReferenceAgreement, FindsABiasOfThreeTimesTheBlockNoiseInOneRegion) {
   // Block means of one render have deviation 0.2 / 4 = 0.05; a bias of 0.15 (15% of the image)
   // in the top-left region (16 blocks) is found there, at the conformance test's level, and
   // nowhere else.
   Synthetic s = makeImages(
       7, [](int, int) { return 0.2; }, 0.15);
-  ReferenceAgreement agreement = compareWithReference(s.a, s.b, s.reference, options());
+  ReferenceAgreement agreement = compareWithReference(s.all(), s.reference, options());
   const double level = stats::sidak(0.001, int(agreement.regions.size()));
   for (const ReferenceRegion& r : agreement.regions) {
     if (r.regionX == 0 && r.regionY == 0)
@@ -105,10 +166,10 @@ TEST(ReferenceAgreement, FindsABiasOfThreeTimesTheBlockNoiseInOneRegion) {
 
 TEST(ReferenceAgreement, NoiselessDifferencesFailAndNoiselessAgreementPasses) {
   Synthetic s = makeImages(3, [](int, int) { return 0.0; });
-  for (const ReferenceRegion& r : compareWithReference(s.a, s.b, s.reference, options()).regions)
+  for (const ReferenceRegion& r : compareWithReference(s.all(), s.reference, options()).regions)
     EXPECT_EQ(r.pValue, 1);
   s.reference.at(5, 5, 1) += 0.01f;
-  ReferenceAgreement agreement = compareWithReference(s.a, s.b, s.reference, options());
+  ReferenceAgreement agreement = compareWithReference(s.all(), s.reference, options());
   EXPECT_EQ(agreement.worst().pValue, 0);
   EXPECT_EQ(agreement.worst().channel, 1);
 }
@@ -124,11 +185,11 @@ TEST(ReferenceAgreement, DifferencesBelowTheResolutionAreNotCounted) {
       for (int x = 0; x < 4; ++x) s.reference.at(x, y, 0) *= factor;
   };
   brighten(1.0005f);
-  EXPECT_EQ(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, 0);
+  EXPECT_EQ(compareWithReference(s.all(), s.reference, o).worst().pValue, 0);
   o.resolution = 1e-3;
-  EXPECT_GT(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, 0.01);
+  EXPECT_GT(compareWithReference(s.all(), s.reference, o).worst().pValue, 0.01);
   brighten(1.03f / 1.0005f);
-  EXPECT_LT(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, 1e-6);
+  EXPECT_LT(compareWithReference(s.all(), s.reference, o).worst().pValue, 1e-6);
 }
 
 TEST(ReferenceAgreement, HalfFloatRoundingOfTheReferenceIsNoise) {
@@ -142,9 +203,9 @@ TEST(ReferenceAgreement, HalfFloatRoundingOfTheReferenceIsNoise) {
     v = std::round(v / step) * step;
   }
   ReferenceAgreementOptions o = options();
-  EXPECT_EQ(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, 0);
+  EXPECT_EQ(compareWithReference(s.all(), s.reference, o).worst().pValue, 0);
   o.referenceIsHalf = true;
-  EXPECT_GT(compareWithReference(s.a, s.b, s.reference, o).worst().pValue, stats::sidak(0.001, 48));
+  EXPECT_GT(compareWithReference(s.all(), s.reference, o).worst().pValue, stats::sidak(0.001, 48));
 }
 
 }  // namespace
