@@ -31,6 +31,7 @@ void RenderResult::add(const RenderResult& other) {
   samples += other.samples;
   rays += other.rays;
   nonFiniteSamples += other.nonFiniteSamples;
+  tailSeconds += other.tailSeconds;
   keepFirst(firstNonFinite, other.firstNonFinite);
 }
 
@@ -66,7 +67,11 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
                             ProgressReporter::modeFor(options.quiet));
   tbb::enumerable_thread_specific<TileCounters> counters;
 
+  std::atomic<double> lastTileStart{0};
   auto renderTile = [&](int tileIndex) {
+    double began = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (double seen = lastTileStart.load(); began > seen;)
+      if (lastTileStart.compare_exchange_weak(seen, began)) break;
     enableFlushToZero();  // Embree asks for FTZ/DAZ on every tracing thread
     TileCounters& c = counters.local();
     std::unique_ptr<Sampler> sampler = sampler_.clone();
@@ -152,6 +157,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   }
   if (splatting) film.addLightPaths(result.samples);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.tailSeconds = std::max(0.0, result.seconds - lastTileStart.load());
   return result;
 }
 
