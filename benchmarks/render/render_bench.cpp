@@ -38,6 +38,7 @@ struct Options {
   std::vector<int> threads;
   int seeds = 1;
   int depth = 5;  // the ceiling's depth when the integrator is not "path"
+  int ceilingRuns = 3;
   bool ceiling = true;
   std::string csv = "render_bench.csv";
 };
@@ -130,7 +131,14 @@ void runCase(const RenderCase& c, const Options& o, const EmbreeDevice& device,
       co.spp = spp;
       co.maxDepth = path ? path->maxDepth() : o.depth;
       co.threads = threads;
-      ceil = ceiling->run(*probe->camera, probe->scene->lights(), co);
+      // The best of a few runs, kind by kind: a ceiling is what Embree can do; other work on
+      // the machine only ever slows it.
+      for (int run = 0; run < o.ceilingRuns; ++run) {
+        CeilingResult c = ceiling->run(*probe->camera, probe->scene->lights(), co);
+        if (run == 0) ceil = c;
+        for (auto kind : {&CeilingResult::camera, &CeilingResult::bounce, &CeilingResult::shadow})
+          if ((c.*kind).cpuSeconds < (ceil.*kind).cpuSeconds) ceil.*kind = c.*kind;
+      }
       fraction = ceilingSecondsFor(r.rays, ceil) / r.cpuSeconds;
     }
     std::printf(
@@ -170,6 +178,8 @@ int main(int argc, char** argv) {
                  "image mean's standard error over them)")
       ->check(CLI::Range(1, 1000));
   app.add_option("--depth", o.depth, "the ceiling's path depth when the integrator is not path");
+  app.add_option("--ceiling-runs", o.ceilingRuns, "ceiling runs per thread count (the fastest)")
+      ->check(CLI::Range(1, 100));
   app.add_flag("!--no-ceiling", o.ceiling, "render only");
   app.add_option("--csv", o.csv, "CSV output");
   CLI11_PARSE(app, argc, argv);
