@@ -62,6 +62,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   // Offset rays one pixel over are too far apart when a pixel gets many samples (pbrt 3e §1.4.3).
   const Float differentialScale = 1 / std::sqrt(Float(std::max(1, spp)));
   const VolumeIntegrator* volume = scene.volume() ? volumeIntegrator_ : nullptr;
+  const bool differentials = scene.needsRayDifferentials() || integrator_.needsRayDifferentials();
 
   ProgressReporter progress(int64_t(nx) * ny, "Rendering",
                             ProgressReporter::modeFor(options.quiet));
@@ -87,8 +88,13 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
       sampler->startPixelSample(pixel, s);
       CameraSample cs = getCameraSample(*sampler, pixel, film.filter());
       RayDifferential ray;
-      Float rayWeight = camera_.generateRayDifferential(cs, &ray);
-      ray.scaleDifferentials(differentialScale);
+      Float rayWeight = 0;
+      if (differentials) {
+        rayWeight = camera_.generateRayDifferential(cs, &ray);
+        ray.scaleDifferentials(differentialScale);
+      } else {
+        rayWeight = camera_.generateRay(cs, &ray);
+      }
       ++c.rays.cameraRays;
       PixelSampleResult result;
       Float alpha = 0;
