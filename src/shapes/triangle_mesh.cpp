@@ -207,11 +207,13 @@ bool TriangleShape::alphaCulls(const Ray& ray, Float b1, Float b2, Float t, bool
   return a && a->evaluate(interactionAt(ray, b1, b2, t)) == 0;
 }
 
-Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2) const {
+Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2, Float* area) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
   Vector3f c = cross(p0 - p2, p1 - p2);
-  Normal3f n = c.lengthSquared() > 0 ? Normal3f(normalize(c)) : Normal3f(0, 0, 1);
+  Float length = c.length();
+  if (area) *area = 0.5f * length;
+  Normal3f n = length > 0 ? Normal3f(c / length) : Normal3f(0, 0, 1);
   // Interpolated normals decide the side (pbrt 3e §3.6.3); otherwise the winding, corrected for
   // mirroring transforms and turned by ReverseOrientation (lrt draft §2.8).
   if (!mesh_->n.empty()) {
@@ -305,15 +307,50 @@ Float TriangleShape::area() const {
 }
 
 Interaction TriangleShape::sample(const Point2f& u, Float* pdf) const {
+  Float area;
+  Interaction it = sampleArea(u, &area);
+  *pdf = area > 0 ? 1 / area : 0;
+  return it;
+}
+
+Interaction TriangleShape::sample(const Interaction& ref, const Point2f& u, Float* pdf) const {
+  Float area;
+  Interaction it = sampleArea(u, &area);
+  // Area density to solid angle, as Shape::sample.
+  Vector3f wi = it.p - ref.p;
+  Float dist2 = wi.lengthSquared();
+  Float cosTheta = dist2 > 0 ? absDot(it.n, wi) / std::sqrt(dist2) : 0;
+  *pdf = cosTheta > 0 && area > 0 ? dist2 / (cosTheta * area) : 0;
+  if (std::isinf(*pdf)) *pdf = 0;
+  return it;
+}
+
+Interaction TriangleShape::sampleArea(const Point2f& u, Float* area) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
   Point2f b = sampleUniformTriangle(u);
   Float b2 = 1 - b.x - b.y;
   Point3f p = p0 * b.x + p1 * b.y + p2 * b2;
   Vector3f pError = (absWeighted(b.x, p0) + absWeighted(b.y, p1) + absWeighted(b2, p2)) * gamma(6);
-  Float a = area();
-  *pdf = a > 0 ? 1 / a : 0;
-  return Interaction(p, orientedNormal(b.x, b.y, b2), pError, Vector3f(), 0);
+  Normal3f n = orientedNormal(b.x, b.y, b2, area);
+  return Interaction(p, n, pError, Vector3f(), 0);
+}
+
+Float TriangleShape::pdf(const Interaction& ref, const Vector3f& wi) const {
+  const int* vi = v();
+  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
+  Ray ray = ref.spawnRay(wi);
+  TriangleHit hit;
+  if (!intersectTriangle(p0, p1, p2, ray, &hit)) return 0;
+  if (mesh_->alpha && alphaCulls(ray, hit.b1, hit.b2, hit.t, false)) return 0;
+  // The hit point as interactionAt finds it.
+  Float b0 = 1 - hit.b1 - hit.b2;
+  Point3f pHit = p0 * b0 + p1 * hit.b1 + p2 * hit.b2;
+  Float a;
+  Float cosTheta = absDot(orientedNormal(b0, hit.b1, hit.b2, &a), -wi);
+  if (cosTheta == 0) return 0;
+  Float pdf = distanceSquared(ref.p, pHit) / (cosTheta * a);
+  return std::isinf(pdf) ? 0 : pdf;
 }
 
 std::vector<std::unique_ptr<Shape>> createTriangleShapes(const TriangleMesh* mesh) {

@@ -59,6 +59,10 @@ class TriangleShape : public Shape {
   Float area() const override;
   // Uniform barycentrics; the normal oriented as an intersection's.
   Interaction sample(const Point2f& u, Float* pdf) const override;
+  // Shape::sample(ref, ...)'s point and density, from one cross product for normal and area.
+  Interaction sample(const Interaction& ref, const Point2f& u, Float* pdf) const override;
+  // Shape::pdf's density, from the triangle test alone (no interaction is made).
+  Float pdf(const Interaction& ref, const Vector3f& wi) const override;
   const TriangleMesh* triangleMesh(int* triangleIndex) const override {
     if (triangleIndex) *triangleIndex = index_;
     return mesh_;
@@ -70,9 +74,12 @@ class TriangleShape : public Shape {
 
  private:
   // The geometric normal for the vertex winding, turned as the mesh says (interpolated normal
-  // if any, else ReverseOrientation xor handedness swap).
-  Normal3f orientedNormal(Float b0, Float b1, Float b2) const;
+  // if any, else ReverseOrientation xor handedness swap); with its area when asked, from the same
+  // cross product.
+  Normal3f orientedNormal(Float b0, Float b1, Float b2, Float* area = nullptr) const;
   const int* v() const { return &mesh_->indices[3 * index_]; }
+  // A point uniform by area with its normal, and the area.
+  Interaction sampleArea(const Point2f& u, Float* area) const;
 
   const TriangleMesh* mesh_;
   int index_;
