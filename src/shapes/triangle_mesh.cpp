@@ -181,7 +181,7 @@ bool TriangleShape::intersect(const Ray& ray, Float* tHit, SurfaceInteraction* i
     return false;
   if (mesh_->alpha && alphaCulls(ray, hit.b1, hit.b2, hit.t, false)) return false;
   *tHit = hit.t;
-  if (isect) *isect = interactionAt(ray, hit.b1, hit.b2, hit.t);
+  if (isect) interactionAt(ray, hit.b1, hit.b2, hit.t, isect);
   return true;
 }
 
@@ -224,8 +224,14 @@ Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2, Float* area
   return mesh_->reverseOrientation != mesh_->transformSwapsHandedness ? -n : n;
 }
 
-SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In,
-                                                Float /*t*/) const {
+SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1, Float b2, Float t) const {
+  SurfaceInteraction isect;
+  interactionAt(ray, b1, b2, t, &isect);
+  return isect;
+}
+
+void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float /*t*/,
+                                  SurfaceInteraction* out) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
   const Point3f corners[3] = {p0, p1, p2};
@@ -236,16 +242,24 @@ SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Floa
   vertexUVs(*mesh_, vi, uv);
 
   // dp/du and dp/dv from the 2x2 system dp02 = duv02 (dpdu dpdv)^T, dp12 likewise (lrt draft
-  // §3.6.2); degenerate (u, v) gives an arbitrary frame around the normal.
+  // §3.6.2); degenerate (u, v) gives an arbitrary frame around the normal. The default (u, v)
+  // (0, 0), (1, 0), (1, 1) solve to p1 - p0 and p2 - p1.
   Vector2f duv02 = uv[0] - uv[2], duv12 = uv[1] - uv[2];
-  Vector3f dp02 = p0 - p2, dp12 = p1 - p2;
-  Float determinant = duv02.x * duv12.y - duv02.y * duv12.x;
-  bool degenerateUV = std::abs(determinant) < 1e-8f;
-  Float invDet = degenerateUV ? 0 : 1 / determinant;
   Vector3f dpdu, dpdv;
-  if (!degenerateUV) {
-    dpdu = (dp02 * duv12.y - dp12 * duv02.y) * invDet;
-    dpdv = (dp12 * duv02.x - dp02 * duv12.x) * invDet;
+  Float invDet = 1;
+  bool degenerateUV = false;
+  if (mesh_->uv.empty()) {
+    dpdu = p1 - p0;
+    dpdv = p2 - p1;
+  } else {
+    Vector3f dp02 = p0 - p2, dp12 = p1 - p2;
+    Float determinant = duv02.x * duv12.y - duv02.y * duv12.x;
+    degenerateUV = std::abs(determinant) < 1e-8f;
+    invDet = degenerateUV ? 0 : 1 / determinant;
+    if (!degenerateUV) {
+      dpdu = (dp02 * duv12.y - dp12 * duv02.y) * invDet;
+      dpdv = (dp12 * duv02.x - dp02 * duv12.x) * invDet;
+    }
   }
   if (degenerateUV || cross(dpdu, dpdv).lengthSquared() == 0) {
     Vector3f ng = cross(p2 - p0, p1 - p0);
@@ -265,11 +279,11 @@ SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Floa
   Vector3f wo = -ray.d;
   Float woLen = wo.length();
   if (woLen > 0) wo = wo / woLen;
-  SurfaceInteraction isect(pHit, pError, uvHit, wo, dpdu, dpdv, Normal3f(), Normal3f(), ray.time,
-                           false);
-  isect.n = isect.shading.n = orientedNormal(b0, b1, b2);
+  SurfaceInteraction& isect = *out;
+  isect = SurfaceInteraction(pHit, pError, uvHit, wo, dpdu, dpdv, Normal3f(), Normal3f(), ray.time,
+                             orientedNormal(b0, b1, b2));
 
-  if (mesh_->n.empty() && mesh_->s.empty()) return isect;
+  if (mesh_->n.empty() && mesh_->s.empty()) return;
   // Shading frame from interpolated normal and tangent (lrt draft §3.6.3): ss is the tangent
   // (or dp/du) made perpendicular to ns, ts completes the frame, so cross(ss, ts) = ns.
   Normal3f ns = isect.n;
@@ -297,7 +311,6 @@ SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Floa
     dndv = (dn2 * duv02.x - dn1 * duv12.x) * invDet;
   }
   isect.setShadingGeometry(ss, ts, dndu, dndv, true);
-  return isect;
 }
 
 Float TriangleShape::area() const {

@@ -52,6 +52,8 @@ class TriangleShape : public Shape {
   // The surface at barycentrics (b1, b2) (p = b0 p0 + b1 p1 + b2 p2, b0 = 1 - b1 - b2) hit at
   // ray parameter t: as used for the hits Embree reports (its u, v are b1, b2).
   SurfaceInteraction interactionAt(const Ray& ray, Float b1, Float b2, Float t) const;
+  // The same, written into *isect.
+  void interactionAt(const Ray& ray, Float b1, Float b2, Float t, SurfaceInteraction* isect) const;
   // Zero area (collinear or repeated vertices) or a NaN or infinite vertex: never hit.
   bool degenerate() const;
   // Whether the mesh's alpha (shadowAlpha when forShadow) cuts the hit (b1, b2, t) away.
