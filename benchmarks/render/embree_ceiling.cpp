@@ -1,7 +1,6 @@
 #include "embree_ceiling.h"
 
 #include <oneapi/tbb/enumerable_thread_specific.h>
-#include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
 
@@ -12,6 +11,7 @@
 
 #include "accel/embree/embree_device.h"
 #include "accel/embree/embree_geometry.h"
+#include "core/parallel_for.h"
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "shapes/sphere.h"
@@ -207,18 +207,16 @@ CeilingResult EmbreeCeiling::run(const Camera& camera, const std::vector<const L
   tbb::enumerable_thread_specific<ThreadTotals> totals;
   auto start = std::chrono::steady_clock::now();
   tbb::task_arena arena(std::max(1, o.threads));
-  arena.execute([&] {
-    tbb::parallel_for(
-        0, nx * ny,
-        [&](int i) {
-          enableFlushToZero();
-          int x0 = b.pMin.x + (i % nx) * tile, y0 = b.pMin.y + (i / nx) * tile;
-          Bounds2i t(Point2i(x0, y0),
-                     Point2i(std::min(x0 + tile, b.pMax.x), std::min(y0 + tile, b.pMax.y)));
-          traceTile(scene_, camera, lights, o, t, uint64_t(i), &totals.local());
-        },
-        tbb::simple_partitioner());
-  });
+  parallelFor(
+      arena, 0, nx * ny,
+      [&](int i) {
+        enableFlushToZero();
+        int x0 = b.pMin.x + (i % nx) * tile, y0 = b.pMin.y + (i / nx) * tile;
+        Bounds2i t(Point2i(x0, y0),
+                   Point2i(std::min(x0 + tile, b.pMax.x), std::min(y0 + tile, b.pMax.y)));
+        traceTile(scene_, camera, lights, o, t, uint64_t(i), &totals.local());
+      },
+      tbb::simple_partitioner());
   CeilingResult r;
   r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const ThreadTotals& t : totals) {

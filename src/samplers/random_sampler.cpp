@@ -4,20 +4,6 @@
 
 namespace candela {
 
-namespace {
-
-// 64 random bits of (sample key, dimension).
-uint64_t dimensionBits(uint64_t sampleKey, uint64_t dimension) {
-  return mixBits(sampleKey + (dimension + 1) * 0x9e3779b97f4a7c15ULL);
-}
-
-// The top 24 bits and the next 24 as two values in [0, 1).
-Point2f pairOf(uint64_t bits) {
-  return Point2f(Float(bits >> 40) * 0x1p-24f, Float((bits >> 16) & 0xffffff) * 0x1p-24f);
-}
-
-}  // namespace
-
 RandomSampler::RandomSampler(int samplesPerPixel, uint64_t seed)
     : samplesPerPixel_(samplesPerPixel), seed_(seed) {}
 
@@ -26,14 +12,26 @@ std::unique_ptr<Sampler> RandomSampler::clone() const {
 }
 
 void RandomSampler::startPixelSample(const Point2i& pixel, int sampleIndex) {
-  sampleKey_ = sampleSeed(pixel, uint64_t(sampleIndex), kPixelDimension, seed_);
+  pixel_ = pixel;
+  sampleIndex_ = sampleIndex;
   dimension_ = 0;
 }
 
-Float RandomSampler::get1D() { return pairOf(dimensionBits(sampleKey_, dimension_++)).x; }
+Float RandomSampler::get1D() {
+  RNG rng = sampleRNG(pixel_, uint64_t(sampleIndex_), dimension_++, seed_);
+  return rng.uniformFloat();
+}
 
-Point2f RandomSampler::get2D() { return pairOf(dimensionBits(sampleKey_, dimension_++)); }
+Point2f RandomSampler::get2D() {
+  RNG rng = sampleRNG(pixel_, uint64_t(sampleIndex_), dimension_++, seed_);
+  Float x = rng.uniformFloat();
+  return Point2f(x, rng.uniformFloat());
+}
 
-Point2f RandomSampler::getPixel2D() { return pairOf(dimensionBits(sampleKey_, kPixelDimension)); }
+Point2f RandomSampler::getPixel2D() {
+  RNG rng = sampleRNG(pixel_, uint64_t(sampleIndex_), kPixelDimension, seed_);
+  Float x = rng.uniformFloat();
+  return Point2f(x, rng.uniformFloat());
+}
 
 }  // namespace candela

@@ -1,7 +1,5 @@
 // Independent uniform samples (pbrt 4e §8.3; not in the lrt draft): the baseline every other
-// sampler is compared against. Each sample hashes (pixel, sample index, seed) once; a dimension's
-// value is then one more mix of that hash and the dimension (the SplitMix64 construction, Steele
-// et al. 2014: a Weyl sequence through a 64-bit finaliser), whose 64 bits give a 2D value.
+// sampler is compared against.
 #pragma once
 
 #include "samplers/sampler.h"
@@ -21,7 +19,8 @@ class RandomSampler final : public Sampler {
  private:
   int samplesPerPixel_;
   uint64_t seed_;
-  uint64_t sampleKey_ = 0;  // the hash of (pixel, sample index, seed)
+  Point2i pixel_;
+  int sampleIndex_ = 0;
   uint64_t dimension_ = 0;
 };
 
