@@ -1,5 +1,6 @@
 #include "shapes/triangle_mesh.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/sampling.h"
@@ -26,6 +27,15 @@ TriangleMesh::TriangleMesh(const Transform& objectToWorld, bool reverseOrientati
     if (reverseOrientation) nn = -nn;
   }
   for (Vector3f& ss : s) ss = objectToWorld(ss);
+  faces.resize(indices.size() / 3);
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const int* v = &indices[3 * i];
+    // Indices out of range are the scene readers' error to report, not a face.
+    if (std::any_of(v, v + 3, [&](int k) { return k < 0 || size_t(k) >= p.size(); })) continue;
+    Vector3f c = cross(p[v[0]] - p[v[2]], p[v[1]] - p[v[2]]);
+    Float length = c.length();
+    faces[i] = Face{length > 0 ? Normal3f(c / length) : Normal3f(0, 0, 1), 0.5f * length};
+  }
 }
 
 namespace {
@@ -208,15 +218,13 @@ bool TriangleShape::alphaCulls(const Ray& ray, Float b1, Float b2, Float t, bool
 }
 
 Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2, Float* area) const {
-  const int* vi = v();
-  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
-  Vector3f c = cross(p0 - p2, p1 - p2);
-  Float length = c.length();
-  if (area) *area = 0.5f * length;
-  Normal3f n = length > 0 ? Normal3f(c / length) : Normal3f(0, 0, 1);
+  const TriangleMesh::Face& face = mesh_->faces[index_];
+  if (area) *area = face.area;
+  const Normal3f& n = face.n;
   // Interpolated normals decide the side (pbrt 3e §3.6.3); otherwise the winding, corrected for
   // mirroring transforms and turned by ReverseOrientation (lrt draft §2.8).
   if (!mesh_->n.empty()) {
+    const int* vi = v();
     Normal3f ns = mesh_->n[vi[0]] * b0 + mesh_->n[vi[1]] * b1 + mesh_->n[vi[2]] * b2;
     if (ns.lengthSquared() > 0) return faceForward(n, Vector3f(ns));
     return n;
