@@ -49,16 +49,6 @@ struct Render {
   double mean = 0;  // of the image's R, G, B
 };
 
-double imageMean(const Film& film) {
-  ImageBuffer image = film.image();
-  double sum = 0;
-  long n = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x)
-      for (int c = 0; c < 3; ++c, ++n) sum += image.at(x, y, c);
-  return n > 0 ? sum / double(n) : 0;
-}
-
 Render render(RenderJob& job, int threads) {
   ProgressiveOptions po;
   po.render.nThreads = threads;
@@ -70,7 +60,7 @@ Render render(RenderJob& job, int threads) {
   out.wallSeconds = r.seconds;
   out.tailSeconds = r.tailSeconds;
   out.rays = r.rays;
-  out.mean = imageMean(*job.film);
+  out.mean = job.film->image().rgbMean();
   return out;
 }
 
