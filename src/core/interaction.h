@@ -59,6 +59,10 @@ struct SurfaceInteraction : Interaction {
   SurfaceInteraction(const Point3f& p, const Vector3f& pError, const Point2f& uv,
                      const Vector3f& wo, const Vector3f& dpdu, const Vector3f& dpdv,
                      const Normal3f& dndu, const Normal3f& dndv, Float time, bool flipNormal);
+  // With the unit geometric normal n given, oriented as the shape orients it (shading.n = n).
+  SurfaceInteraction(const Point3f& p, const Vector3f& pError, const Point2f& uv,
+                     const Vector3f& wo, const Vector3f& dpdu, const Vector3f& dpdv,
+                     const Normal3f& dndu, const Normal3f& dndv, Float time, const Normal3f& n);
   // Shading frame from interpolated normals etc.; the geometric normal is turned to its side
   // when orientationIsAuthoritative, else the shading normal is turned to the geometric side.
   void setShadingGeometry(const Vector3f& dpdus, const Vector3f& dpdvs, const Normal3f& dndus,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include "core/happens_before.h"
@@ -39,12 +40,20 @@ struct OrderedBody {
 
 }  // namespace detail
 
-template <typename Index, typename Body>
-void parallelFor(tbb::task_arena& arena, Index begin, Index end, const Body& body) {
+// The same with oneTBB's partitioner given: tbb::simple_partitioner hands out one index at a
+// time, so no thread holds a run of them while another has none.
+template <typename Index, typename Body, typename Partitioner>
+void parallelFor(tbb::task_arena& arena, Index begin, Index end, const Body& body,
+                 const Partitioner& partitioner) {
   const detail::OrderedBody<Body> ordered{body};
   releaseOrder(&ordered);
   detail::AcquireOrderAtExit joined{&body};
-  arena.execute([&] { tbb::parallel_for(begin, end, ordered); });
+  arena.execute([&] { tbb::parallel_for(begin, end, ordered, partitioner); });
+}
+
+template <typename Index, typename Body>
+void parallelFor(tbb::task_arena& arena, Index begin, Index end, const Body& body) {
+  parallelFor(arena, begin, end, body, tbb::auto_partitioner());
 }
 
 }  // namespace candela

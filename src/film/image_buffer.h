@@ -48,6 +48,16 @@ struct ImageBuffer {
       if (channels[i] == name) return int(i);
     return -1;
   }
+  // The mean of the first three channels (R, G, B as the film makes them) over every pixel; 0 for
+  // an empty image.
+  double rgbMean() const {
+    double sum = 0;
+    size_t n = 0;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        for (int c = 0; c < 3 && c < channelCount(); ++c, ++n) sum += at(x, y, c);
+    return n > 0 ? sum / double(n) : 0;
+  }
   // The alpha channel ("A", or "alpha"), or -1.
   int alphaChannel() const {
     int a = channelIndex("A");

@@ -9,6 +9,8 @@ class BoxFilter final : public Filter {
  public:
   explicit BoxFilter(const Vector2f& radius);
   Float evaluate(const Point2f& p) const override;
+  // Uniform over the support: the offset is u scaled, the weight f / pdf the support's area.
+  FilterSample sample(const Point2f& u) const override;
 };
 
 }  // namespace candela

@@ -29,8 +29,9 @@ class Filter {
 
   const Vector2f& radius() const { return radius_; }
   virtual Float evaluate(const Point2f& p) const = 0;
-  // Offset distributed in proportion to |f|, from a tabulated distribution built on first use.
-  FilterSample sample(const Point2f& u) const;
+  // Offset distributed in proportion to |f|, from a tabulated distribution built on first use;
+  // filters whose |f| has a closed-form inverse sample it directly.
+  virtual FilterSample sample(const Point2f& u) const;
   // The integral of f over its support, by numerical quadrature on the table.
   Float integral() const;
   // The same quadrature over the part of the support inside `offsets` (offsets from the centre):

@@ -85,6 +85,9 @@ class SurfaceIntegrator {
   // lighting; the scene build warns for integrators that do not (photons, gather rays, light
   // subpaths would cross the volume unattenuated).
   virtual bool attenuatesEveryRay() const { return rendersMedia(); }
+  // Whether Li reads the camera ray's differentials even where no texture does (the irradiance
+  // cache spaces its samples by the pixel footprint).
+  virtual bool needsRayDifferentials() const { return false; }
   // Images to write besides the film's once rendering is done (film: the render's, for its pixel
   // bounds and scale).
   virtual std::vector<NamedImage> extraImages(const Film& /*film*/) const { return {}; }

@@ -12,6 +12,7 @@ class PathIntegrator : public SurfaceIntegrator {
   bool attenuatesEveryRay() const override { return true; }
   explicit PathIntegrator(int maxDepth, int rrStartDepth = 3)
       : maxDepth_(maxDepth), rrStartDepth_(rrStartDepth) {}
+  int maxDepth() const { return maxDepth_; }
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
   // The radiance arriving along ray without the emission of what it meets first (a surface's Le

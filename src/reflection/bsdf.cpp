@@ -20,16 +20,25 @@ int BSDF::numComponents(int flags) const {
   return n;
 }
 
+namespace {
+// Whether b models a pair of directions that reflect (or else transmit).
+bool models(const BxDF& b, bool reflect) {
+  return (b.type() & (reflect ? kReflection : kTransmission)) != 0;
+}
+}  // namespace
+
+bool BSDF::reflects(const Vector3f& woW, const Vector3f& wiW) const {
+  return dot(wiW, ng_) * dot(woW, ng_) > 0;
+}
+
 Spectrum BSDF::f(const Vector3f& woW, const Vector3f& wiW, int flags) const {
   Vector3f wi = worldToLocal(wiW), wo = worldToLocal(woW);
   if (wo.z == 0) return Spectrum(0);
-  bool reflect = dot(wiW, ng_) * dot(woW, ng_) > 0;
+  bool reflect = reflects(woW, wiW);
   Spectrum f(0);
   for (int i = 0; i < count_; ++i) {
     const BxDF* b = bxdfs_[i];
-    if (!b->matches(flags)) continue;
-    if ((reflect && (b->type() & kReflection)) || (!reflect && (b->type() & kTransmission)))
-      f += b->f(wo, wi);
+    if (b->matches(flags) && models(*b, reflect)) f += b->f(wo, wi);
   }
   return f;
 }
@@ -59,7 +68,14 @@ Spectrum BSDF::sampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point
       if (bxdfs_[i] != bxdf && bxdfs_[i]->matches(flags)) *pdf += bxdfs_[i]->pdf(wo, wi);
   }
   if (matching > 1) *pdf /= Float(matching);
-  if (!(bxdf->type() & kSpecular)) f = this->f(woW, *wiW, flags);
+  if (!(bxdf->type() & kSpecular)) {
+    // The whole BSDF's value at wi. One component's is what its sampleF returned (its contract),
+    // kept only on the side the geometric normal gives the pair, as f() keeps it.
+    if (matching > 1)
+      f = this->f(woW, *wiW, flags);
+    else if (!models(*bxdf, reflects(woW, *wiW)))
+      f = Spectrum(0);
+  }
   return f;
 }
 

@@ -45,6 +45,10 @@ class BSDF {
   const Float eta;
 
  private:
+  // Whether (wo, wi) is a reflection, both on one side of the geometric normal, rather than a
+  // transmission: what decides which components model it (Veach's fix for shading normals).
+  bool reflects(const Vector3f& woW, const Vector3f& wiW) const;
+
   Vector3f ns_, ss_, ts_;
   Normal3f ng_;
   const BxDF* bxdfs_[kMaxBxDFs] = {};

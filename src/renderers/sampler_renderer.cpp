@@ -1,6 +1,7 @@
 #include "renderers/sampler_renderer.h"
 
 #include <oneapi/tbb/enumerable_thread_specific.h>
+#include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include <atomic>
@@ -31,6 +32,7 @@ void RenderResult::add(const RenderResult& other) {
   samples += other.samples;
   rays += other.rays;
   nonFiniteSamples += other.nonFiniteSamples;
+  tailSeconds += other.tailSeconds;
   keepFirst(firstNonFinite, other.firstNonFinite);
 }
 
@@ -48,9 +50,19 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   SplatBuffer* splats = splatting ? &film.enableSplats() : nullptr;
   const Bounds2i bounds =
       splatting ? Bounds2i(Point2i(0, 0), film.fullResolution()) : film.pixelBounds();
-  const int tile = std::max(1, options.tileSize);
-  const int nx = (bounds.pMax.x - bounds.pMin.x + tile - 1) / tile;
-  const int ny = (bounds.pMax.y - bounds.pMin.y + tile - 1) / tile;
+  const int threads = options.nThreads > 0 ? options.nThreads : tbb::info::default_concurrency();
+  // Tiles are taken one at a time by whichever thread is free, so the render ends within a tile's
+  // time of the first thread running out of work. Tiles of the given side, halved until every
+  // thread has kTilesPerThread to take, keep that tail short on many cores too.
+  constexpr int kTilesPerThread = 16;
+  const int width = bounds.pMax.x - bounds.pMin.x, height = bounds.pMax.y - bounds.pMin.y;
+  int tile = std::max(1, options.tileSize);
+  auto tilesOf = [&](int side) {
+    return int64_t((width + side - 1) / side) * ((height + side - 1) / side);
+  };
+  while (tile > 1 && tilesOf(tile) < int64_t(kTilesPerThread) * threads) tile = (tile + 1) / 2;
+  const int nx = (width + tile - 1) / tile;
+  const int ny = (height + tile - 1) / tile;
   const int spp = sampler_.samplesPerPixel();
   const int s0 = std::max(0, options.firstSample);
   const int s1 = options.endSample < 0 ? spp : std::min(options.endSample, spp);
@@ -61,16 +73,31 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   // Offset rays one pixel over are too far apart when a pixel gets many samples (pbrt 3e §1.4.3).
   const Float differentialScale = 1 / std::sqrt(Float(std::max(1, spp)));
   const VolumeIntegrator* volume = scene.volume() ? volumeIntegrator_ : nullptr;
+  const bool differentials = scene.needsRayDifferentials() || integrator_.needsRayDifferentials();
 
   ProgressReporter progress(int64_t(nx) * ny, "Rendering",
                             ProgressReporter::modeFor(options.quiet));
-  tbb::enumerable_thread_specific<TileCounters> counters;
+  // Each thread's counters, sampler and arena, kept from tile to tile (a sampler's values depend
+  // only on what startPixelSample is given, never on what it was asked before).
+  struct ThreadState {
+    TileCounters counters;
+    std::unique_ptr<Sampler> sampler;
+    std::unique_ptr<MemoryArena> arena;
+  };
+  tbb::enumerable_thread_specific<ThreadState> states([&] {
+    return ThreadState{TileCounters(), sampler_.clone(), std::make_unique<MemoryArena>()};
+  });
 
+  std::atomic<double> lastTileStart{0};
   auto renderTile = [&](int tileIndex) {
+    double began = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (double seen = lastTileStart.load(); began > seen;)
+      if (lastTileStart.compare_exchange_weak(seen, began)) break;
     enableFlushToZero();  // Embree asks for FTZ/DAZ on every tracing thread
-    TileCounters& c = counters.local();
-    std::unique_ptr<Sampler> sampler = sampler_.clone();
-    MemoryArena arena;
+    ThreadState& state = states.local();
+    TileCounters& c = state.counters;
+    Sampler* sampler = state.sampler.get();
+    MemoryArena& arena = *state.arena;
     IntegratorContext ctx{*sampler, arena, c.rays, splats, volume};
     int tx = tileIndex % nx, ty = tileIndex / nx;
     int x0 = bounds.pMin.x + tx * tile, y0 = bounds.pMin.y + ty * tile;
@@ -82,8 +109,13 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
       sampler->startPixelSample(pixel, s);
       CameraSample cs = getCameraSample(*sampler, pixel, film.filter());
       RayDifferential ray;
-      Float rayWeight = camera_.generateRayDifferential(cs, &ray);
-      ray.scaleDifferentials(differentialScale);
+      Float rayWeight = 0;
+      if (differentials) {
+        rayWeight = camera_.generateRayDifferential(cs, &ray);
+        ray.scaleDifferentials(differentialScale);
+      } else {
+        rayWeight = camera_.generateRay(cs, &ray);
+      }
       ++c.rays.cameraRays;
       PixelSampleResult result;
       Float alpha = 0;
@@ -137,14 +169,15 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     progress.update(1);
   };
 
-  int threads = options.nThreads > 0 ? options.nThreads : tbb::info::default_concurrency();
   tbb::task_arena taskArena(threads);
-  parallelFor(taskArena, 0, nx * ny, [&](int i) { renderTile(i); });
+  parallelFor(
+      taskArena, 0, nx * ny, [&](int i) { renderTile(i); }, tbb::simple_partitioner());
   progress.done();
 
   RenderResult result;
   result.rays = prepassRays;
-  for (const TileCounters& c : counters) {
+  for (const ThreadState& state : states) {
+    const TileCounters& c = state.counters;
     result.rays += c.rays;
     result.samples += c.samples;
     result.nonFiniteSamples += c.nonFinite;
@@ -152,6 +185,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   }
   if (splatting) film.addLightPaths(result.samples);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.tailSeconds = std::max(0.0, result.seconds - lastTileStart.load());
   return result;
 }
 

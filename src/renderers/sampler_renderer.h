@@ -42,9 +42,12 @@ struct RenderResult {
   uint64_t samples = 0;
   RayStats rays;
   uint64_t nonFiniteSamples = 0;  // NaN or infinite radiance, dropped and counted
+  // From the start of the last tile to the end of the render: the time in which some thread had
+  // no tile left to take (the scheduling's tail).
+  double tailSeconds = 0;
   // The first of them (in PixelSampleIndex order), when they came from camera samples.
   std::optional<PixelSampleIndex> firstNonFinite;
-  // Adds another render's counts (rays, samples, non-finite samples, the earlier first).
+  // Adds another render's counts (rays, samples, non-finite samples, tails; the earlier first).
   void add(const RenderResult& other);
 };
 

@@ -5,8 +5,16 @@
 // two of them. pbrt-v2 spreads one Halton sequence over the whole image, which cannot be
 // computed one pixel at a time; per pixel, scrambling decorrelates neighbouring pixels and the
 // high bases' leading digits. Past the 1024th prime the values are independent uniform ones.
+//
+// A pixel's samples share its permutations: each coordinate's are made on its first use in the
+// pixel, with the small table that makes its values cheap (FastScrambledRadicalInverse), and
+// kept while the samples asked for are the same pixel's (the renderer takes a pixel's samples one
+// after another).
 #pragma once
 
+#include <vector>
+
+#include "samplers/radical_inverse.h"
 #include "samplers/sampler.h"
 
 namespace candela {
@@ -17,19 +25,53 @@ class HaltonSampler final : public Sampler {
   int samplesPerPixel() const override { return samplesPerPixel_; }
   std::unique_ptr<Sampler> clone() const override;
   void startPixelSample(const Point2i& pixel, int sampleIndex) override;
-  Float get1D() override;
-  Point2f get2D() override;
-  Point2f getPixel2D() override;
+  Float get1D() override { return coordinateValue(coordinate_++); }
+  Point2f get2D() override {
+    uint64_t c = coordinate_;
+    coordinate_ += 2;
+    Float x = coordinateValue(c);
+    return Point2f(x, coordinateValue(c + 1));
+  }
+  Point2f getPixel2D() override {
+    Float x = coordinateValue(0);
+    return Point2f(x, coordinateValue(1));
+  }
+
+  // The key of the digit permutations of one coordinate in one pixel: coordinate c of sample i
+  // there is scrambledRadicalInverse(i, kPrimes[c], coordinateKey(pixel, c, seed)).
+  static uint64_t coordinateKey(const Point2i& pixel, uint64_t coordinate, uint64_t seed);
 
  private:
+  struct Coordinate {
+    FastScrambledRadicalInverse inverse;
+    uint64_t pixelStamp = 0;   // the pixel its key was set for (pixelStamp_); 0: none
+    uint32_t tableOffset = 0;  // where its table starts in tables_
+  };
+
+  HaltonSampler(int samplesPerPixel, uint64_t seed,
+                std::shared_ptr<const std::vector<Coordinate>> prototype);
+
   // The value of coordinate `coordinate` (0 and 1: the image plane) for the current sample.
-  Float coordinateValue(uint64_t coordinate) const;
+  Float coordinateValue(uint64_t coordinate) {
+    if (coordinate >= uint64_t(kPrimeTableSize)) return randomValue(coordinate);
+    Coordinate& c = coordinates_[coordinate];
+    if (c.pixelStamp != pixelStamp_) setKey(c, coordinate);
+    return c.inverse.value(sampleIndex_, &tables_[c.tableOffset]);
+  }
+  void setKey(Coordinate& c, uint64_t coordinate);
+  Float randomValue(uint64_t coordinate) const;
 
   int samplesPerPixel_;
   uint64_t seed_;
+  // The coordinates before any key is set, shared by the clones.
+  std::shared_ptr<const std::vector<Coordinate>> prototype_;
   Point2i pixel_;
   uint32_t sampleIndex_ = 0;
   uint64_t coordinate_ = 2;  // the next coordinate after the image plane's two
+  uint64_t pixelStamp_ = 0;  // counts the pixels started; 0: none yet
+  uint64_t pixelKey_ = 0;    // the current pixel's, from which its coordinates' keys derive
+  std::vector<Coordinate> coordinates_;  // one per prime base
+  std::vector<uint64_t> tables_;         // the coordinates' tables
 };
 
 }  // namespace candela

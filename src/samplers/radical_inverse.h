@@ -3,6 +3,7 @@
 // primes as bases, one per dimension.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -29,12 +30,63 @@ inline constexpr std::array<uint32_t, kPrimeTableSize> kPrimes = [] {
 // Phi_b(n), exact digit by digit in double precision, as a Float in [0, 1).
 Float radicalInverse(uint32_t n, uint32_t base);
 
-// Phi_b(n) with each digit d_i (i = 1, 2, ...) replaced by a pseudo-random permutation of the
-// digits chosen by (key, i): the affine map (a d + c) mod b with a in [1, b), c in [0, b), a
-// permutation because b is prime (random linear digit scrambling, Matousek 1998). Digits past n's
-// last become c_i, not 0, so the expansion runs on until they no longer change a Float, as with
-// the draft's folded radical inverse. Scrambling keeps Phi_b's stratification: the first b^m
-// values of n still put one value in each interval [j/b^m, (j+1)/b^m).
+// Phi_b(n) with each digit d_i (i = 0, 1, ...; d_0 the lowest) replaced by its image under a
+// pseudo-random permutation of the digits chosen by (key, i): the affine map (a_i d + c_i) mod b
+// with a_i in [1, b), c_i in [0, b), a permutation because b is prime (random linear digit
+// scrambling, Matousek 1998). Digits past n's last become c_i, not 0, so the expansion runs on
+// to the D-th digit, where b^-D <= 2^-26 no longer changes a Float in [0.25, 1), as with the
+// draft's folded radical inverse. Scrambling keeps Phi_b's stratification: the first b^m values
+// of n still put one value in each interval [j/b^m, (j+1)/b^m).
+//
+// The maps of the first D digits come from two hashes of the key: c_0, c_1, ... are the base-b
+// digits of one as a binary fraction, a_i - 1 the base-(b-1) digits of the other (the digits of a
+// uniform number are independent and uniform); digits past D hash (key, i) each. The value is
+// exact before its one rounding: V = sum_i pi_i(d_i) b^(E-1-i) is an integer (E = max(D, n's
+// digit count), V < 2^45) and the result is V times the double 1 / b^E, rounded to a Float.
+// base: a prime below 2^16.
 Float scrambledRadicalInverse(uint32_t n, uint32_t base, uint64_t key);
+
+// scrambledRadicalInverse in one base, fast for indices below a count (the samples of a pixel),
+// for one key at a time: setKey makes the key's table of what the digits above the lowest
+// contribute (one entry per b indices, one addition each); a value is then a table entry plus the
+// lowest digit's image, with no hash or division (dividing by b is a multiplication by 2^64 / b,
+// exact for 32-bit numbers: Lemire, Kaser and Kurz 2019). Equal to scrambledRadicalInverse bit
+// for bit.
+class FastScrambledRadicalInverse {
+ public:
+  FastScrambledRadicalInverse(uint32_t base, uint32_t count);
+  uint32_t base() const { return base_; }
+  // Entries of a key's table: ceil(count / base).
+  uint32_t tableSize() const { return tableSize_; }
+  // Makes key's table (tableSize() entries) and keeps what value() needs of the key.
+  void setKey(uint64_t key, uint64_t* table);
+
+  Float value(uint32_t n, const uint64_t* table) const {
+    if (n >= count_) return scrambledRadicalInverse(n, base_, key_);
+    uint32_t q = divide(n), low = n - q * base_;
+    uint32_t t = a0_ * low + c0_;
+    uint64_t v = table[q] + uint64_t(t - divide(t) * base_) * lowWeight_;
+    Float x = Float(double(int64_t(v)) * invScale_);  // v < 2^45
+    return x < kOneMinusEpsilon ? x : kOneMinusEpsilon;
+  }
+
+ private:
+  uint32_t divide(uint32_t m) const {
+    return uint32_t((static_cast<unsigned __int128>(reciprocal_) * m) >> 64);
+  }
+
+  // What value() reads, first.
+  uint32_t base_, count_;
+  uint32_t a0_ = 1, c0_ = 0;  // the lowest digit's map under the key
+  uint64_t reciprocal_;       // ceil(2^64 / base)
+  uint64_t lowWeight_;        // b^(D-1), the lowest digit's weight in V
+  double invScale_;           // 1 / b^D
+  uint64_t key_ = 0;
+  // What setKey reads.
+  uint64_t tailScale_;  // b^(D-K)
+  uint32_t tableSize_;
+  uint8_t digits_;      // D
+  uint8_t fastDigits_;  // K: the digits of count - 1 (at least 1)
+};
 
 }  // namespace candela

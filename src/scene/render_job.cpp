@@ -418,6 +418,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   job.stats.mediumInterfaces = job.namedMedia->interfaceCount();
   warnAboutNamedMedia(*job.namedMedia, integratorDesc, job.imageRenderer != nullptr, warn);
   job.scene->setMedia(std::move(sceneMedia));
+  job.scene->setNeedsRayDifferentials(job.textures->texturesCreated() > 0);
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
   if (warn && job.camera->clipsAway(job.scene->worldBound()))
     warn(camDesc.loc,

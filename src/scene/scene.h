@@ -72,12 +72,18 @@ class Scene {
   // pbrt-v3's named media (see SceneMedia); set once by the build.
   const SceneMedia& media() const { return media_; }
   void setMedia(SceneMedia media) { media_ = std::move(media); }
+  // Whether the scene's textures read camera rays' differentials (they filter by the footprint
+  // they give): the build says false for a scene without textures, whose camera rays are then
+  // made without them (integrators may still ask for them). True unless set.
+  bool needsRayDifferentials() const { return needsRayDifferentials_; }
+  void setNeedsRayDifferentials(bool needs) { needsRayDifferentials_ = needs; }
 
  private:
   const Aggregate* aggregate_;
   std::vector<const Light*> lights_;
   const Medium* volume_ = nullptr;
   SceneMedia media_;
+  bool needsRayDifferentials_ = true;
 };
 
 }  // namespace candela

@@ -29,6 +29,14 @@ class SphereShape : public Quadric {
   const char* kind() const override { return "sphere"; }
 
   Float radius() const { return Float(radius_); }
+  // A whole sphere under a similarity transform is the surface of a ball in world space: its
+  // centre and radius then, false otherwise (a benchmark gives such spheres to Embree natively).
+  bool worldBall(Point3f* centre, Float* radius) const {
+    if (!usesConeSampling()) return false;
+    *centre = worldCenter_;
+    *radius = worldRadius_;
+    return true;
+  }
 
  protected:
   void lineCoefficients(const double o[3], const double d[3], double* a, double* b,

@@ -1,5 +1,6 @@
 #include "shapes/triangle_mesh.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/sampling.h"
@@ -26,6 +27,15 @@ TriangleMesh::TriangleMesh(const Transform& objectToWorld, bool reverseOrientati
     if (reverseOrientation) nn = -nn;
   }
   for (Vector3f& ss : s) ss = objectToWorld(ss);
+  faces.resize(indices.size() / 3);
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const int* v = &indices[3 * i];
+    // Indices out of range are the scene readers' error to report, not a face.
+    if (std::any_of(v, v + 3, [&](int k) { return k < 0 || size_t(k) >= p.size(); })) continue;
+    Vector3f c = cross(p[v[0]] - p[v[2]], p[v[1]] - p[v[2]]);
+    Float length = c.length();
+    faces[i] = Face{length > 0 ? Normal3f(c / length) : Normal3f(0, 0, 1), 0.5f * length};
+  }
 }
 
 namespace {
@@ -181,7 +191,7 @@ bool TriangleShape::intersect(const Ray& ray, Float* tHit, SurfaceInteraction* i
     return false;
   if (mesh_->alpha && alphaCulls(ray, hit.b1, hit.b2, hit.t, false)) return false;
   *tHit = hit.t;
-  if (isect) *isect = interactionAt(ray, hit.b1, hit.b2, hit.t);
+  if (isect) interactionAt(ray, hit.b1, hit.b2, hit.t, isect);
   return true;
 }
 
@@ -207,14 +217,14 @@ bool TriangleShape::alphaCulls(const Ray& ray, Float b1, Float b2, Float t, bool
   return a && a->evaluate(interactionAt(ray, b1, b2, t)) == 0;
 }
 
-Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2) const {
-  const int* vi = v();
-  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
-  Vector3f c = cross(p0 - p2, p1 - p2);
-  Normal3f n = c.lengthSquared() > 0 ? Normal3f(normalize(c)) : Normal3f(0, 0, 1);
+Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2, Float* area) const {
+  const TriangleMesh::Face& face = mesh_->faces[index_];
+  if (area) *area = face.area;
+  const Normal3f& n = face.n;
   // Interpolated normals decide the side (pbrt 3e §3.6.3); otherwise the winding, corrected for
   // mirroring transforms and turned by ReverseOrientation (lrt draft §2.8).
   if (!mesh_->n.empty()) {
+    const int* vi = v();
     Normal3f ns = mesh_->n[vi[0]] * b0 + mesh_->n[vi[1]] * b1 + mesh_->n[vi[2]] * b2;
     if (ns.lengthSquared() > 0) return faceForward(n, Vector3f(ns));
     return n;
@@ -222,8 +232,14 @@ Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2) const {
   return mesh_->reverseOrientation != mesh_->transformSwapsHandedness ? -n : n;
 }
 
-SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In,
-                                                Float /*t*/) const {
+SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1, Float b2, Float t) const {
+  SurfaceInteraction isect;
+  interactionAt(ray, b1, b2, t, &isect);
+  return isect;
+}
+
+void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float /*t*/,
+                                  SurfaceInteraction* out) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
   const Point3f corners[3] = {p0, p1, p2};
@@ -234,16 +250,24 @@ SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Floa
   vertexUVs(*mesh_, vi, uv);
 
   // dp/du and dp/dv from the 2x2 system dp02 = duv02 (dpdu dpdv)^T, dp12 likewise (lrt draft
-  // §3.6.2); degenerate (u, v) gives an arbitrary frame around the normal.
+  // §3.6.2); degenerate (u, v) gives an arbitrary frame around the normal. The default (u, v)
+  // (0, 0), (1, 0), (1, 1) solve to p1 - p0 and p2 - p1.
   Vector2f duv02 = uv[0] - uv[2], duv12 = uv[1] - uv[2];
-  Vector3f dp02 = p0 - p2, dp12 = p1 - p2;
-  Float determinant = duv02.x * duv12.y - duv02.y * duv12.x;
-  bool degenerateUV = std::abs(determinant) < 1e-8f;
-  Float invDet = degenerateUV ? 0 : 1 / determinant;
   Vector3f dpdu, dpdv;
-  if (!degenerateUV) {
-    dpdu = (dp02 * duv12.y - dp12 * duv02.y) * invDet;
-    dpdv = (dp12 * duv02.x - dp02 * duv12.x) * invDet;
+  Float invDet = 1;
+  bool degenerateUV = false;
+  if (mesh_->uv.empty()) {
+    dpdu = p1 - p0;
+    dpdv = p2 - p1;
+  } else {
+    Vector3f dp02 = p0 - p2, dp12 = p1 - p2;
+    Float determinant = duv02.x * duv12.y - duv02.y * duv12.x;
+    degenerateUV = std::abs(determinant) < 1e-8f;
+    invDet = degenerateUV ? 0 : 1 / determinant;
+    if (!degenerateUV) {
+      dpdu = (dp02 * duv12.y - dp12 * duv02.y) * invDet;
+      dpdv = (dp12 * duv02.x - dp02 * duv12.x) * invDet;
+    }
   }
   if (degenerateUV || cross(dpdu, dpdv).lengthSquared() == 0) {
     Vector3f ng = cross(p2 - p0, p1 - p0);
@@ -263,11 +287,11 @@ SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Floa
   Vector3f wo = -ray.d;
   Float woLen = wo.length();
   if (woLen > 0) wo = wo / woLen;
-  SurfaceInteraction isect(pHit, pError, uvHit, wo, dpdu, dpdv, Normal3f(), Normal3f(), ray.time,
-                           false);
-  isect.n = isect.shading.n = orientedNormal(b0, b1, b2);
+  SurfaceInteraction& isect = *out;
+  isect = SurfaceInteraction(pHit, pError, uvHit, wo, dpdu, dpdv, Normal3f(), Normal3f(), ray.time,
+                             orientedNormal(b0, b1, b2));
 
-  if (mesh_->n.empty() && mesh_->s.empty()) return isect;
+  if (mesh_->n.empty() && mesh_->s.empty()) return;
   // Shading frame from interpolated normal and tangent (lrt draft §3.6.3): ss is the tangent
   // (or dp/du) made perpendicular to ns, ts completes the frame, so cross(ss, ts) = ns.
   Normal3f ns = isect.n;
@@ -295,7 +319,6 @@ SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1In, Floa
     dndv = (dn2 * duv02.x - dn1 * duv12.x) * invDet;
   }
   isect.setShadingGeometry(ss, ts, dndu, dndv, true);
-  return isect;
 }
 
 Float TriangleShape::area() const {
@@ -305,15 +328,50 @@ Float TriangleShape::area() const {
 }
 
 Interaction TriangleShape::sample(const Point2f& u, Float* pdf) const {
+  Float area;
+  Interaction it = sampleArea(u, &area);
+  *pdf = area > 0 ? 1 / area : 0;
+  return it;
+}
+
+Interaction TriangleShape::sample(const Interaction& ref, const Point2f& u, Float* pdf) const {
+  Float area;
+  Interaction it = sampleArea(u, &area);
+  // Area density to solid angle, as Shape::sample.
+  Vector3f wi = it.p - ref.p;
+  Float dist2 = wi.lengthSquared();
+  Float cosTheta = dist2 > 0 ? absDot(it.n, wi) / std::sqrt(dist2) : 0;
+  *pdf = cosTheta > 0 && area > 0 ? dist2 / (cosTheta * area) : 0;
+  if (std::isinf(*pdf)) *pdf = 0;
+  return it;
+}
+
+Interaction TriangleShape::sampleArea(const Point2f& u, Float* area) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
   Point2f b = sampleUniformTriangle(u);
   Float b2 = 1 - b.x - b.y;
   Point3f p = p0 * b.x + p1 * b.y + p2 * b2;
   Vector3f pError = (absWeighted(b.x, p0) + absWeighted(b.y, p1) + absWeighted(b2, p2)) * gamma(6);
-  Float a = area();
-  *pdf = a > 0 ? 1 / a : 0;
-  return Interaction(p, orientedNormal(b.x, b.y, b2), pError, Vector3f(), 0);
+  Normal3f n = orientedNormal(b.x, b.y, b2, area);
+  return Interaction(p, n, pError, Vector3f(), 0);
+}
+
+Float TriangleShape::pdf(const Interaction& ref, const Vector3f& wi) const {
+  const int* vi = v();
+  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
+  Ray ray = ref.spawnRay(wi);
+  TriangleHit hit;
+  if (!intersectTriangle(p0, p1, p2, ray, &hit)) return 0;
+  if (mesh_->alpha && alphaCulls(ray, hit.b1, hit.b2, hit.t, false)) return 0;
+  // The hit point as interactionAt finds it.
+  Float b0 = 1 - hit.b1 - hit.b2;
+  Point3f pHit = p0 * b0 + p1 * hit.b1 + p2 * hit.b2;
+  Float a;
+  Float cosTheta = absDot(orientedNormal(b0, hit.b1, hit.b2, &a), -wi);
+  if (cosTheta == 0) return 0;
+  Float pdf = distanceSquared(ref.p, pHit) / (cosTheta * a);
+  return std::isinf(pdf) ? 0 : pdf;
 }
 
 std::vector<std::unique_ptr<Shape>> createTriangleShapes(const TriangleMesh* mesh) {

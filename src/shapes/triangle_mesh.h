@@ -33,6 +33,15 @@ struct TriangleMesh {
   std::vector<Vector3f> s;   // world space, empty or one per vertex
   std::vector<Point2f> uv;   // empty or one per vertex
   bool reverseOrientation, transformSwapsHandedness;
+  // Per triangle, made once from its world-space vertices: the unit normal of the winding,
+  // (p0 - p2) x (p1 - p2) normalised ((0, 0, 1) when it has no length), and the area. Every hit,
+  // light sample and light density needs them; 16 bytes a triangle save a cross product, a
+  // square root and a division each time.
+  struct Face {
+    Normal3f n;
+    Float area;
+  };
+  std::vector<Face> faces;
   // Cut-outs (pbrt-v2's "alpha" and "shadowalpha"): a hit where the texture is 0 at its (u, v)
   // is ignored, by intersect (alpha) and by intersectP (shadowAlpha). Owned by the scene's
   // textures; nullptr: opaque.
@@ -52,6 +61,8 @@ class TriangleShape : public Shape {
   // The surface at barycentrics (b1, b2) (p = b0 p0 + b1 p1 + b2 p2, b0 = 1 - b1 - b2) hit at
   // ray parameter t: as used for the hits Embree reports (its u, v are b1, b2).
   SurfaceInteraction interactionAt(const Ray& ray, Float b1, Float b2, Float t) const;
+  // The same, written into *isect.
+  void interactionAt(const Ray& ray, Float b1, Float b2, Float t, SurfaceInteraction* isect) const;
   // Zero area (collinear or repeated vertices) or a NaN or infinite vertex: never hit.
   bool degenerate() const;
   // Whether the mesh's alpha (shadowAlpha when forShadow) cuts the hit (b1, b2, t) away.
@@ -59,6 +70,10 @@ class TriangleShape : public Shape {
   Float area() const override;
   // Uniform barycentrics; the normal oriented as an intersection's.
   Interaction sample(const Point2f& u, Float* pdf) const override;
+  // Shape::sample(ref, ...)'s point and density, from one cross product for normal and area.
+  Interaction sample(const Interaction& ref, const Point2f& u, Float* pdf) const override;
+  // Shape::pdf's density, from the triangle test alone (no interaction is made).
+  Float pdf(const Interaction& ref, const Vector3f& wi) const override;
   const TriangleMesh* triangleMesh(int* triangleIndex) const override {
     if (triangleIndex) *triangleIndex = index_;
     return mesh_;
@@ -70,9 +85,12 @@ class TriangleShape : public Shape {
 
  private:
   // The geometric normal for the vertex winding, turned as the mesh says (interpolated normal
-  // if any, else ReverseOrientation xor handedness swap).
-  Normal3f orientedNormal(Float b0, Float b1, Float b2) const;
+  // if any, else ReverseOrientation xor handedness swap); with its area when asked (both from the
+  // mesh's faces).
+  Normal3f orientedNormal(Float b0, Float b1, Float b2, Float* area = nullptr) const;
   const int* v() const { return &mesh_->indices[3 * index_]; }
+  // A point uniform by area with its normal, and the area.
+  Interaction sampleArea(const Point2f& u, Float* area) const;
 
   const TriangleMesh* mesh_;
   int index_;

@@ -20,15 +20,7 @@
 namespace candela {
 namespace {
 
-double meanOf(const Film& film) {
-  ImageBuffer image = film.image();
-  double sum = 0;
-  size_t n = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x)
-      for (int c = 0; c < 3; ++c, ++n) sum += image.at(x, y, c);
-  return sum / double(n);
-}
+double meanOf(const Film& film) { return film.image().rgbMean(); }
 
 // The box with its LookAt's eye and target multiplied by s and the world scaled by s.
 std::string scaledBox(const std::string& s) {

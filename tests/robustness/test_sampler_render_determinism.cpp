@@ -2,6 +2,7 @@
 // same bits for any thread count, tile size and crop window (DESIGN.md, data flow step 3).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -99,12 +100,15 @@ TEST(SamplerRenderDeterminism, EveryCameraAndFilter) {
 
 TEST(SamplerRenderDeterminism, EveryNewPieceRendersSomethingFinite) {
   ImageBuffer img = render(scene("\"halton\"", "\"environment\"", "\"sinc\""), 0, 16);
-  double sum = 0;
+  // Something, not something positive: with 4 samples a pixel, sinc's negative lobes make a
+  // pixel's filter weights sum to near zero now and then, and the image's sum takes the sign of
+  // those pixels (negative for 6 of seeds 1-10 with the earlier per-digit-hash scrambling too).
+  double sumAbs = 0;
   for (float v : img.data) {
     ASSERT_TRUE(std::isfinite(v));
-    sum += v;
+    sumAbs += std::abs(v);
   }
-  EXPECT_GT(sum, 0);
+  EXPECT_GT(sumAbs, 0);
 }
 
 }  // namespace

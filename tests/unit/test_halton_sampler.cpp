@@ -1,8 +1,11 @@
 // The Halton sampler: values in [0, 1); the first b^m samples stratified in base b per
 // coordinate and the first 2^a 3^b image samples one per cell of a 2^a x 3^b grid, scrambled or
-// not; scrambling differs per pixel and keeps the digit structure.
+// not; scrambling differs per pixel and keeps the digit structure. The fast evaluation (tables per
+// pixel and coordinate) gives the reference scrambledRadicalInverse's values bit for bit, in any
+// order of pixels and samples.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "samplers/halton_sampler.h"
@@ -45,6 +48,62 @@ TEST(ScrambledRadicalInverse, StratifiedInEveryBaseAndKeyDependent) {
     }
     EXPECT_NE(scrambledRadicalInverse(7, base, 1), scrambledRadicalInverse(7, base, 2));
   }
+}
+
+TEST(ScrambledRadicalInverse, ScramblesEveryDigitOfTheExpansion) {
+  // Phi_b(0) scrambled is sum c_i b^-(i+1) over the D digits: its digits are the offsets, which
+  // differ from key to key in every position, so across keys each of the first digits takes
+  // every value (here: the first 4 base-5 digits of 200 keys' values at n = 0).
+  for (int digit = 0; digit < 4; ++digit) {
+    std::vector<int> seen(5, 0);
+    for (uint64_t key = 0; key < 200; ++key) {
+      double v = scrambledRadicalInverse(0, 5, key);
+      for (int i = 0; i < digit; ++i) v = v * 5 - std::floor(v * 5);
+      ++seen[size_t(std::floor(v * 5))];
+    }
+    for (int c : seen) EXPECT_GT(c, 15) << "digit " << digit;
+  }
+}
+
+TEST(FastScrambledRadicalInverse, SameBitsAsTheReference) {
+  // Below the count by the tables, past it (and past b^D for base 2) by the general path.
+  std::vector<uint64_t> table;
+  for (uint32_t base : {2u, 3u, 5u, 7u, 31u, 257u, 8161u})
+    for (uint32_t count : {1u, 2u, 7u, 64u, 100u, 1000u}) {
+      FastScrambledRadicalInverse fast(base, count);
+      ASSERT_EQ(fast.tableSize(), (count + base - 1) / base);
+      table.assign(fast.tableSize(), 0);
+      for (uint64_t key : {3ull, 0x9e3779b97f4a7c15ull}) {
+        fast.setKey(key, table.data());
+        for (uint32_t n = 0; n < 2 * count + base; ++n)
+          ASSERT_EQ(fast.value(n, table.data()), scrambledRadicalInverse(n, base, key))
+              << "base " << base << " count " << count << " n " << n;
+        for (uint32_t n : {1u << 26, (1u << 26) + 12345u, ~0u})
+          ASSERT_EQ(fast.value(n, table.data()), scrambledRadicalInverse(n, base, key));
+      }
+    }
+}
+
+TEST(HaltonSampler, ValuesAreTheReferencesInAnyOrder) {
+  // Coordinate c of sample i in pixel p is scrambledRadicalInverse(i, kPrimes[c], key(p, c)),
+  // whether a pixel's samples come in order, interleaved with another pixel's, or past the
+  // sample count.
+  HaltonSampler sampler(16, 9);
+  const Point2i pixels[] = {Point2i(3, 4), Point2i(-2, 7)};
+  for (int pass = 0; pass < 2; ++pass)
+    for (int s = 0; s < 20; ++s)
+      for (int k = 0; k < 2; ++k) {
+        int i = pass == 0 ? s : 19 - s;
+        Point2i p = pixels[k];
+        sampler.startPixelSample(p, i);
+        Point2f image = sampler.getPixel2D();
+        std::vector<Float> values = {image.x, image.y};
+        for (int d = 0; d < 30; ++d) values.push_back(sampler.get1D());
+        for (uint64_t c = 0; c < values.size(); ++c)
+          ASSERT_EQ(values[c], scrambledRadicalInverse(uint32_t(i), kPrimes[c],
+                                                       HaltonSampler::coordinateKey(p, c, 9)))
+              << "pixel " << p.x << "," << p.y << " sample " << i << " coordinate " << c;
+      }
 }
 
 TEST(HaltonSampler, ImagePlaneOnePerCellOfTwoToTheAThreeToTheB) {

@@ -225,7 +225,7 @@ bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned primID, fl
   } else {
     // Embree's (u, v) are the barycentrics of vertices 1 and 2.
     const auto* tri = static_cast<const TriangleShape*>(prim.shape);
-    *isect = tri->interactionAt(ray, u, v, t);
+    tri->interactionAt(ray, u, v, t, isect);
   }
   isect->primitive = &prim;
   return true;

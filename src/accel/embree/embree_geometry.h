@@ -1,5 +1,6 @@
 // Internal to the Embree aggregate: what each Embree geometry stands for, the query context its
-// callbacks write to, and the callbacks themselves. Only src/accel/embree includes this.
+// callbacks write to, and the callbacks themselves. Only src/accel/embree includes this (and the
+// render benchmark's Embree ceiling, which converts rays as the aggregate does).
 #pragma once
 
 #include <embree3/rtcore.h>

@@ -34,6 +34,7 @@ class IrradianceCacheIntegrator : public SpecularRecursionIntegrator {
   RayStats prepare(const Scene& scene, const Camera& camera, const Sampler& sampler,
                    const Film& film, const PrepassOptions& options) override;
   std::string statsReport() const override;
+  bool needsRayDifferentials() const override { return true; }  // the pixel spacing
   const IrradianceCacheSettings& settings() const { return settings_; }
   // The cache prepare() built; null before it, and when maxerror is 0.
   const IrradianceOctree* cache() const { return cache_.get(); }
