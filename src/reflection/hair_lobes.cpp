@@ -17,16 +17,49 @@ Float azimuthalScale(Float betaN) {
   return Float(std::sqrt(M_PI / 8) * (0.265 * b + 1.194 * b * b + 5.372 * std::pow(b, 22)));
 }
 
-double besselI0(double x) { return std::cyl_bessel_i(0.0, std::abs(x)); }
+namespace {
+
+// Below this the power series, from it on the asymptotic expansion.
+constexpr double kAsymptoticFrom = 30;
+
+// I0(x) = sum_k (x^2 / 4)^k / (k!)^2 (Abramowitz & Stegun 9.6.12): positive terms, so no
+// cancellation; about 70 terms at x = 30. Our own rather than std::cyl_bessel_i, whose libstdc++
+// implementation calls lgamma, which writes the global signgam: a data race between render
+// threads (ThreadSanitizer found it).
+double besselI0Series(double x) {
+  const double t = x * x / 4;
+  double term = 1, sum = 1;
+  for (int k = 1; term > 1e-17 * sum; ++k) {
+    term *= t / (double(k) * k);
+    sum += term;
+  }
+  return sum;
+}
+
+// I0(x) sqrt(2 pi x) / e^x ~ sum_k ((2k-1)!!)^2 / (k! (8x)^k) (Abramowitz & Stegun 9.7.1): from
+// x = 30 the 17th term is below 4e-18, and the terms still fall there.
+double besselI0AsymptoticSum(double x) {
+  double term = 1, sum = 1;
+  for (int k = 1; k <= 16; ++k) {
+    term *= double(2 * k - 1) * (2 * k - 1) / (8.0 * k * x);
+    sum += term;
+  }
+  return sum;
+}
+
+}  // namespace
+
+double besselI0(double x) {
+  x = std::abs(x);
+  if (x < kAsymptoticFrom) return besselI0Series(x);
+  return std::exp(x) / std::sqrt(2 * M_PI * x) * besselI0AsymptoticSum(x);
+}
 
 double logBesselI0(double x) {
   x = std::abs(x);
-  // Below 500 I0 is far from overflow (I0(500) ~ 1e215); above, the expansion's terms are
-  // ((2k-1)!!)^2 / (k! (8x)^k) and the first left out (k = 4) is below 2e-12.
-  if (x < 500) return std::log(besselI0(x));
-  double r = 1 / x;
-  return x - 0.5 * std::log(2 * M_PI * x) +
-         std::log1p(r * (1.0 / 8 + r * (9.0 / 128 + r * (225.0 / 3072))));
+  // Finite where I0 itself overflows (x > 713).
+  if (x < kAsymptoticFrom) return std::log(besselI0Series(x));
+  return x - 0.5 * std::log(2 * M_PI * x) + std::log(besselI0AsymptoticSum(x));
 }
 
 double longitudinalScattering(double cosThetaI, double cosThetaO, double sinThetaI,

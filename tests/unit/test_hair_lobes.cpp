@@ -25,10 +25,15 @@ TEST(HairLobes, BesselI0MatchesKnownValuesAndItsLogBranchesAgree) {
   EXPECT_NEAR(hair::besselI0(0), 1, 1e-15);
   EXPECT_NEAR(hair::besselI0(1), 1.2660658777520082, 1e-14);  // Abramowitz & Stegun table 9.8
   EXPECT_NEAR(hair::besselI0(-2), 2.2795853023360673, 1e-13);
-  // Below 500 the logarithm is log(I0); above, the asymptotic expansion: both against I0 itself,
-  // which still fits a double at 700.
-  for (double x : {12.0, 100.0, 499.0, 501.0, 600.0, 700.0})
-    EXPECT_NEAR(hair::logBesselI0(x), std::log(std::cyl_bessel_i(0.0, x)), 1e-12 * x) << x;
+  // Our series (below 30) and asymptotic expansion (from 30) against the standard library's I0,
+  // on both sides of the switch and up to where I0 still fits a double; the logarithm too.
+  for (double x : {1e-3, 0.5, 3.0, 12.0, 29.999, 30.0, 30.001, 45.0, 100.0, 499.0, 501.0, 700.0}) {
+    const double reference = std::cyl_bessel_i(0.0, x);
+    EXPECT_NEAR(hair::besselI0(x), reference, 1e-14 * reference) << x;
+    EXPECT_NEAR(hair::logBesselI0(x), std::log(reference), 1e-14 * std::log(reference)) << x;
+  }
+  // Beyond a double's range the logarithm stays finite and close to x - log(2 pi x) / 2.
+  EXPECT_NEAR(hair::logBesselI0(1e4), 1e4 - 0.5 * std::log(2 * M_PI * 1e4), 1e-4);
 }
 
 TEST(HairLobes, LongitudinalIsNormalisedForWideAndNarrowLobes) {
