@@ -8,20 +8,28 @@
 // rrthreshold 0 has none and runs at maxdepth 12 and (Kd 0.999) at 1000.
 //
 // What is left is float rounding of the points, relative spacing eps = 2^-24 (|offset| + R) / R
-// at the hit points: it perturbs an estimate's cos cos' / r^2 and its pdfs by about eps / cos^2,
-// so the deviations are heavy-tailed multiples of eps, and a mismatched pair of pdfs lowers the
-// power heuristic's sum (it is largest when they agree), so they are mostly negative. Measured
-// over these placements: at most 2.3 eps (path) and 126 eps (volpath) per pixel (at 1000 radii from
-// the origin, not tested: 14 eps and 28 eps). Every pixel is
-// held to 64 eps (path) and 512 eps (volpath): 4e-6 and 3e-5 at the origin, 4e-4 and 3e-3 where
-// the offset is 100 radii. A lost shadow ray or a self-hit at any of path's three vertices moves
-// its pixel by at least 0.5^3 / 2 / 16 / 1.875 = 2e-3.
+// at the hit points: a float point lies off the sphere by up to its rounding h, and along a
+// chord that leaves it at a grazing angle theta the light's area density and the BSDF's cosine
+// density then differ by about h / (2 R cos^2 theta); the power heuristic turns unequal pdfs into
+// a deficit (its sum is largest when they agree). So the deviations are a few hundredths of an
+// eps in almost every pixel and, rarely, one pixel tens or hundreds of eps low, where one of its
+// samples went out within a few thousandths of the tangent plane (P(cos theta < c) = c^2 for
+// cosine sampling): measured over seeds 1-40 at 1e3 and 1e5 from the origin, 10 of 40 renders
+// have 1 to 4 such pixels beyond 64 eps, up to 513 eps, and so does 1 render in 40 at the
+// origin; the 90th-percentile pixel is within 0.1 eps. A per-pixel bound is therefore met only
+// by a seed's luck, and this test asserts what rounding does imply instead: the 90th-percentile
+// pixel within 1 eps, and no more than 8 of the 256 pixels beyond
+// 64 eps (path) and 512 eps (volpath). A lost shadow ray or a self-hit is not a rare grazing
+// event: it recurs at every vertex where its cause does and moves its pixel by at least
+// 0.5^3 / 2 / 16 / 1.875 = 2e-3 (path) each time, far more pixels than 8.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "scene_files.h"
 #include "support/render_scene.h"
@@ -67,18 +75,45 @@ double furnaceValue(double albedo, int depth) {
   return (1 - std::pow(albedo, depth + 1)) / (1 - albedo);
 }
 
-// The largest relative deviation of any pixel's colour channel from expected.
-double worstDeviation(const Film& film, double expected) {
+// Every pixel's largest relative deviation of a colour channel from expected, sorted; infinity
+// for a pixel that is not finite.
+std::vector<double> sortedDeviations(const Film& film, double expected) {
   ImageBuffer image = film.image();
-  double worst = 0;
+  std::vector<double> deviations;
   for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x)
+    for (int x = 0; x < image.width; ++x) {
+      double worst = 0;
       for (int c = 0; c < 3; ++c) {
         float v = image.at(x, y, c);
-        if (!std::isfinite(v)) return INFINITY;
-        worst = std::max(worst, std::abs(v / expected - 1));
+        worst = std::isfinite(v) ? std::max(worst, std::abs(v / expected - 1)) : INFINITY;
       }
-  return worst;
+      deviations.push_back(worst);
+    }
+  std::sort(deviations.begin(), deviations.end());
+  return deviations;
+}
+
+double worstDeviation(const Film& film, double expected) {
+  return sortedDeviations(film, expected).back();
+}
+
+// What the exact furnace asserts of a render (see the top): the bulk within bulkEps, at most
+// kMaxGrazingPixels pixels beyond outlierEps.
+constexpr int kMaxGrazingPixels = 8;
+struct RoundingFigures {
+  double percentile90 = 0;  // eps
+  int outliers = 0;         // pixels beyond the outlier bound
+  double worst = 0;         // eps
+};
+
+RoundingFigures roundingFigures(const Film& film, double expected, double eps, double outlierEps) {
+  std::vector<double> d = sortedDeviations(film, expected);
+  RoundingFigures r;
+  r.percentile90 = d[d.size() * 9 / 10] / eps;
+  r.outliers =
+      int(std::count_if(d.begin(), d.end(), [&](double x) { return x > outlierEps * eps; }));
+  r.worst = d.back() / eps;
+  return r;
 }
 
 double floatSpacing(const Furnace& f) {
@@ -102,28 +137,39 @@ const Furnace kPlacements[] = {placed(1e-6, 0), placed(1e-3, 0), placed(1, 0),  
                                placed(1e6, 0),  placed(10, 1e3), placed(1e3, 1e5)};
 
 TEST(StiffFurnace, EveryPixelIsExactToRoundingFromTenToTheMinusSixToTheSixAndAt1e5) {
-  double worstPath = 0, worstVolpath = 0;
+  RoundingFigures path, volpath;  // the worst of each figure over the renders
+  auto keepWorst = [](RoundingFigures* worst, const RoundingFigures& r) {
+    worst->percentile90 = std::max(worst->percentile90, r.percentile90);
+    worst->outliers = std::max(worst->outliers, r.outliers);
+    worst->worst = std::max(worst->worst, r.worst);
+  };
   for (Furnace f : kPlacements) {
     double eps = floatSpacing(f);
     for (const char* accel : {"embree", "bvh", "kdtree", "grid"}) {
       test::TestRenderOptions options;
       options.build.accelerator = accel;
-      double path = worstDeviation(test::renderSceneText(furnaceText(f), options).film(),
-                                   furnaceValue(f.albedo, 3));
-      EXPECT_LE(path, 64 * eps) << describe(f) << ", " << accel << ", path";
-      worstPath = std::max(worstPath, path / eps);
+      RoundingFigures r = roundingFigures(test::renderSceneText(furnaceText(f), options).film(),
+                                          furnaceValue(f.albedo, 3), eps, 64);
+      EXPECT_LE(r.percentile90, 1) << describe(f) << ", " << accel << ", path";
+      EXPECT_LE(r.outliers, kMaxGrazingPixels) << describe(f) << ", " << accel << ", path";
+      keepWorst(&path, r);
     }
     f.integrator = "Integrator \"volpath\" \"integer maxdepth\" [12] \"float rrthreshold\" [0]";
-    double volpath =
-        worstDeviation(test::renderSceneText(furnaceText(f)).film(), furnaceValue(f.albedo, 12));
-    EXPECT_LE(volpath, 512 * eps) << describe(f) << ", volpath";
-    worstVolpath = std::max(worstVolpath, volpath / eps);
+    RoundingFigures r = roundingFigures(test::renderSceneText(furnaceText(f)).film(),
+                                        furnaceValue(f.albedo, 12), eps, 512);
+    EXPECT_LE(r.percentile90, 1) << describe(f) << ", volpath";
+    EXPECT_LE(r.outliers, kMaxGrazingPixels) << describe(f) << ", volpath";
+    keepWorst(&volpath, r);
   }
   test::recordFigure(
-      "furnace sphere radius 1e-6..1e6, offsets 1e3 and 1e5: every pixel "
-      "within 64 eps (path, maxdepth 3) / 512 eps (volpath, maxdepth 12) of "
-      "Le (1 - rho^(d+1)) / (1 - rho), eps = float spacing at the hit points",
-      "worst pixel %.1f eps (path, 4 accelerators), %.1f eps (volpath)", worstPath, worstVolpath);
+      "furnace sphere radius 1e-6..1e6, offsets 1e3 and 1e5, against Le (1 - rho^(d+1)) / "
+      "(1 - rho), eps = float spacing at the hit points: 90th-percentile pixel within 1 eps "
+      "(path, maxdepth 3; volpath, maxdepth 12), at most 8 of 256 pixels (rare grazing "
+      "samples) beyond 64 / 512 eps",
+      "90th percentile %.2f / %.1f eps; pixels beyond: at most %d / %d; worst pixel %.0f / %.0f "
+      "eps (path, 4 accelerators / volpath)",
+      path.percentile90, volpath.percentile90, path.outliers, volpath.outliers, path.worst,
+      volpath.worst);
 }
 
 // Kd 0.999 to maxdepth 1000 (issue 15): (1 - 0.999^1001) / 0.001 = 632.67, through 1000
