@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "film/error_metrics.h"
 #include "renderers/progressive_render.h"
@@ -53,6 +54,15 @@ ImageBuffer renderOnePass(int spp, uint64_t seed) {
   return renderOnePassJob(spp, seed).film().image();
 }
 
+// Renders with seeds 1, 2 and 3 against one reference: each pass's measured relMSE should lie
+// within the 95% interval around what the variances predict. The intervals undercover somewhat
+// (the pixels' estimates are heavy-tailed, so their sample variances are more often low than
+// high) and one render's seven nested passes share their luck: over seeds 1-12 a render's passes
+// were covered 4 to 7 times of 7 (mean 6.2, sd 1.2), both for the path integrator with a separate
+// BSDF ray for MIS and for the one whose next direction carries it, so "5 of 7" in a single
+// render failed for 2 seeds of 12 with either: a false alarm rate near 15%. Summed over three
+// renders (mean 18.5, sd 2.1 by the measured spread) at least 14 of 21 is 2.4 standard deviations
+// below the mean, a false alarm rate near 1%.
 TEST(Convergence, PathRelMseFallsAtTheUnbiasedRateAndTheIntervalCoversIt) {
   // Reference: 8x the largest sample count, with another seed. Its own noise adds 1/8 to the last
   // pass's expected error, flattening the expected slope to about -0.97.
@@ -60,43 +70,48 @@ TEST(Convergence, PathRelMseFallsAtTheUnbiasedRateAndTheIntervalCoversIt) {
   ImageBuffer reference = referenceJob.film().image();
   // The reference's own noise is part of every measured error.
   double referenceRelMse = estimateFromVariance(referenceJob.film()).relmseFromVariance;
-  auto built = buildBox(256, 1);
-  RenderJob& job = built.job();
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
-  std::vector<double> logSpp, logErr;
-  int passes = 0, covered = 0;
-  ProgressiveOptions po;
-  po.render.quiet = true;
-  po.afterPass = [&](const PassReport& pass) {
-    if (pass.spp < 4) return true;
-    ErrorMetrics m = compareToReference(*job.film, reference);
-    logSpp.push_back(std::log(double(pass.spp)));
-    logErr.push_back(std::log(m.relmse));
-    ++passes;
-    // The measured error lies within the interval around what the variances predict.
-    double predicted = m.relmseFromVariance + referenceRelMse;
-    if (std::abs(m.relmse - predicted) <= m.relmseCi95) ++covered;
-    std::printf("spp %4d relmse %.6f predicted %.6f +- %.6f\n", pass.spp, m.relmse, predicted,
-                m.relmseCi95);
-    return true;
-  };
-  ProgressiveResult r = renderProgressive(renderer, *job.scene, *job.film, 256, po);
-  EXPECT_EQ(r.spp, 256);
-  EXPECT_EQ(r.reason, StopReason::Completed);
-  ASSERT_EQ(passes, 7);  // 4, 8, ..., 256
-  // Least-squares slope of log relMSE against log spp.
-  double mx = 0, my = 0;
-  for (int i = 0; i < passes; ++i) mx += logSpp[i] / passes, my += logErr[i] / passes;
-  double sxy = 0, sxx = 0;
-  for (int i = 0; i < passes; ++i) {
-    sxy += (logSpp[i] - mx) * (logErr[i] - my);
-    sxx += (logSpp[i] - mx) * (logSpp[i] - mx);
+  int covered = 0, passesInAll = 0;
+  for (uint64_t seed : {1, 2, 3}) {
+    auto built = buildBox(256, seed);
+    RenderJob& job = built.job();
+    SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+    std::vector<double> logSpp, logErr;
+    int passes = 0;
+    ProgressiveOptions po;
+    po.render.quiet = true;
+    po.afterPass = [&](const PassReport& pass) {
+      if (pass.spp < 4) return true;
+      ErrorMetrics m = compareToReference(*job.film, reference);
+      logSpp.push_back(std::log(double(pass.spp)));
+      logErr.push_back(std::log(m.relmse));
+      ++passes;
+      // The measured error lies within the interval around what the variances predict.
+      double predicted = m.relmseFromVariance + referenceRelMse;
+      if (std::abs(m.relmse - predicted) <= m.relmseCi95) ++covered;
+      std::printf("seed %d spp %4d relmse %.6f predicted %.6f +- %.6f\n", int(seed), pass.spp,
+                  m.relmse, predicted, m.relmseCi95);
+      return true;
+    };
+    ProgressiveResult r = renderProgressive(renderer, *job.scene, *job.film, 256, po);
+    EXPECT_EQ(r.spp, 256);
+    EXPECT_EQ(r.reason, StopReason::Completed);
+    ASSERT_EQ(passes, 7);  // 4, 8, ..., 256
+    passesInAll += passes;
+    // Least-squares slope of log relMSE against log spp.
+    double mx = 0, my = 0;
+    for (int i = 0; i < passes; ++i) mx += logSpp[i] / passes, my += logErr[i] / passes;
+    double sxy = 0, sxx = 0;
+    for (int i = 0; i < passes; ++i) {
+      sxy += (logSpp[i] - mx) * (logErr[i] - my);
+      sxx += (logSpp[i] - mx) * (logSpp[i] - mx);
+    }
+    double slope = sxy / sxx;
+    std::printf("seed %d: log-log slope %.3f\n", int(seed), slope);
+    EXPECT_GE(slope, -1.2) << "seed " << seed;
+    EXPECT_LE(slope, -0.8) << "seed " << seed;
   }
-  double slope = sxy / sxx;
-  std::printf("log-log slope %.3f, interval covered %d of %d passes\n", slope, covered, passes);
-  EXPECT_GE(slope, -1.2);
-  EXPECT_LE(slope, -0.8);
-  EXPECT_GE(covered, 5);
+  std::printf("interval covered %d of %d passes\n", covered, passesInAll);
+  EXPECT_GE(covered, 14);
 }
 
 TEST(Convergence, PassesGiveTheSameBitsAsOnePass) {
