@@ -99,4 +99,26 @@ Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, c
          Float(nLights);
 }
 
+Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
+                                   const Scene& scene, IntegratorContext& ctx) {
+  int nLights = int(scene.lights().size());
+  Float uChoice = ctx.sampler.get1D();
+  Point2f uLight = ctx.sampler.get2D();
+  if (nLights == 0) return Spectrum(0);
+  const Light& light = *scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
+  Vector3f wi;
+  Float lightPdf = 0;
+  VisibilityTester vis;
+  Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
+  if (lightPdf == 0 || li.isBlack()) return Spectrum(0);
+  Spectrum f = bsdf.f(it.wo, wi, kAllBxDF & ~kSpecular) * absDot(wi, bsdf.shadingNormal());
+  if (f.isBlack() || !scene.unoccluded(vis, ctx.stats)) return Spectrum(0);
+  li *= volumeTransmittance(vis, scene, ctx);
+  // The density of this direction under the light strategy includes the choice of the light.
+  Float pdf = lightPdf / Float(nLights);
+  if (light.isDelta()) return f * li / pdf;
+  Float weight = powerHeuristic(1, pdf, 1, bsdf.pdf(it.wo, wi, kAllBxDF));
+  return f * li * (weight / pdf);
+}
+
 }  // namespace candela

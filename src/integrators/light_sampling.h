@@ -21,4 +21,11 @@ Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf, 
 Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, const Scene& scene,
                                IntegratorContext& ctx);
 
+// One light chosen uniformly and one sample of it, weighted by the power heuristic against the
+// BSDF's sampling of all its components: the light strategy of a path whose next direction is
+// the BSDF's sample, which carries the BSDF strategy (pbrt 4e §13.4; PathIntegrator). Attenuates
+// by the scene's volume.
+Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
+                                   const Scene& scene, IntegratorContext& ctx);
+
 }  // namespace candela

@@ -1,6 +1,7 @@
 #include "integrators/path.h"
 
 #include "accel/primitive.h"
+#include "core/sampling.h"
 #include "integrators/light_sampling.h"
 #include "integrators/specular_differentials.h"
 #include "integrators/volume_transmittance.h"
@@ -20,12 +21,21 @@ Spectrum PathIntegrator::scatteredLi(const RayDifferential& ray, const Scene& sc
   return radiance(ray, scene, ctx, false, &alpha, hitDistance);
 }
 
+// One ray per strategy and vertex (pbrt 4e §13.4): the direction the BSDF samples to continue the
+// path is also the BSDF strategy of next-event estimation. Emission the path meets after a
+// non-specular bounce is weighted against the light strategy's density of that direction, the
+// light sample at each vertex against the BSDF's; a light the path meets after a specular bounce,
+// or after a vertex that sampled no light, counts in full.
 Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene& scene,
                                   IntegratorContext& ctx, bool firstEmission, Float* alpha,
                                   Float* hitDistance) const {
   Spectrum l(0), beta(1);
   RayDifferential ray(cameraRay);
   bool specularBounce = false;
+  // The vertex the current ray left and the BSDF's density of its direction there.
+  Interaction previous;
+  Float scatteringPdf = 0;
+  const Float lightChoicePdf = scene.lights().empty() ? 0 : 1 / Float(scene.lights().size());
   *alpha = 0;
   for (int bounces = 0;; ++bounces) {
     SurfaceInteraction isect;
@@ -37,39 +47,54 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
       *alpha = hit ? 1 : 0;
       *hitDistance = hit ? ray.tMax : kInfinity;
     }
-    // Emission is counted here only where next-event estimation could not have sampled it.
-    if ((bounces == 0 && firstEmission) || (bounces > 0 && specularBounce)) {
+    if (bounces > 0 || firstEmission) {
+      // After a non-specular bounce the light strategy could have sampled the same direction.
+      bool weighted = bounces > 0 && !specularBounce;
+      auto misWeight = [&](const Light& light) {
+        if (!weighted) return Float(1);
+        Float lightPdf = lightChoicePdf * light.pdfLi(previous, ray.d);
+        return powerHeuristic(1, scatteringPdf, 1, lightPdf);
+      };
       if (hit) {
-        if (isect.primitive->areaLight) l += beta * isect.primitive->areaLight->L(isect, -ray.d);
+        if (const AreaLight* area = isect.primitive->areaLight) {
+          Spectrum le = area->L(isect, -ray.d);
+          if (!le.isBlack()) l += beta * le * misWeight(*area);
+        }
       } else {
-        for (const Light* light : scene.lights()) l += beta * light->Le(ray);
+        for (const Light* light : scene.lights()) {
+          Spectrum le = light->Le(ray);
+          if (!le.isBlack()) l += beta * le * misWeight(*light);
+        }
       }
     }
     if (!hit || bounces >= maxDepth_) break;
     const Primitive& prim = *isect.primitive;
     if (!prim.material) {
+      // An interface between media: the path goes on unchanged, from the same vertex.
       ray = continueThrough(isect, ray, tMax);
       --bounces;
       continue;
     }
     if (bounces == 0) isect.computeDifferentials(ray);
     const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
-    if (bsdf->numComponents(kAllBxDF & ~kSpecular) > 0)
-      l += beta * uniformSampleOneLight(isect, *bsdf, scene, ctx);
+    bool sampledLight = bsdf->numComponents(kAllBxDF & ~kSpecular) > 0;
+    if (sampledLight) l += beta * sampleOneLightAgainstBSDF(isect, *bsdf, scene, ctx);
 
     Vector3f wi;
-    Float pdf;
     BxDFType sampledType;
-    Spectrum f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf,
+    Float uComponent = ctx.sampler.get1D();
+    Spectrum f = bsdf->sampleF(isect.wo, &wi, uComponent, ctx.sampler.get2D(), &scatteringPdf,
                                kAllBxDF, &sampledType);
-    if (f.isBlack() || pdf == 0) break;
-    beta *= f * (absDot(wi, bsdf->shadingNormal()) / pdf);
-    specularBounce = (sampledType & kSpecular) != 0;
+    if (f.isBlack() || scatteringPdf == 0) break;
+    beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
+    specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
+    previous = isect;
     ray = RayDifferential(isect.spawnRay(wi));
 
     // Russian roulette: continue with probability tied to the throughput (pbrt 2e §15.3 uses
-    // min(0.5, y); the throughput's largest channel wastes less on coloured paths).
-    if (bounces >= rrStartDepth_) {
+    // min(0.5, y); the throughput's largest channel wastes less on coloured paths). Not before
+    // the last segment, which only looks for emission: it would add variance to save one ray.
+    if (bounces >= rrStartDepth_ && bounces + 1 < maxDepth_) {
       Float q = std::max(Float(0.05), 1 - beta.maxComponent());
       if (ctx.sampler.get1D() < q) break;
       beta /= 1 - q;

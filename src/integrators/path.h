@@ -1,6 +1,8 @@
 // "path": unidirectional path tracing with next-event estimation, MIS by the power heuristic and
 // Russian roulette (pbrt 2e §15.3). maxdepth bounds the number of scattering events, so a path
-// of maxdepth d carries emission seen directly plus up to d reflections.
+// of maxdepth d carries emission seen directly plus up to d reflections. Each vertex traces one
+// shadow ray and one ray onward: the BSDF's sample that continues the path is also the BSDF
+// strategy of the light's MIS (pbrt 4e §13.4), where pbrt 2e traces a third ray for it.
 #pragma once
 
 #include "integrators/integrator.h"
