@@ -60,8 +60,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     Vector3f wi;
     Float pdf;
     BxDFType sampledType;
-    Spectrum f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf,
-                               kAllBxDF, &sampledType);
+    Spectrum f =
+        bsdf->sampleF(isect.wo, &wi, ctx.get1D(), ctx.get2D(), &pdf, kAllBxDF, &sampledType);
     if (f.isBlack() || pdf == 0) break;
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / pdf);
     specularBounce = (sampledType & kSpecular) != 0;
@@ -71,7 +71,7 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     // min(0.5, y); the throughput's largest channel wastes less on coloured paths).
     if (bounces >= rrStartDepth_) {
       Float q = std::max(Float(0.05), 1 - beta.maxComponent());
-      if (ctx.sampler.get1D() < q) break;
+      if (ctx.get1D() < q) break;
       beta /= 1 - q;
     }
     if (!beta.isFinite()) break;
