@@ -12,6 +12,9 @@ namespace {
 // samples in a pixel at once).
 constexpr int kMaxTabulatedSamples = 4096;
 
+// Coordinates keyed at once when a sample asks for one not keyed yet in its pixel.
+constexpr uint64_t kKeysAhead = 4;
+
 // The digit permutations are the pixel's, the same for all its samples (index 0 in the key).
 uint64_t pixelKey(const Point2i& pixel, uint64_t seed) {
   return sampleSeed(pixel, 0, kPixelDimension, seed);
@@ -66,7 +69,12 @@ void HaltonSampler::startPixelSample(const Point2i& pixel, int sampleIndex) {
 
 Float HaltonSampler::slowValue(uint64_t coordinate) {
   if (coordinate >= uint64_t(kPrimeTableSize)) return randomValue(coordinate);
-  for (; keyedEnd_ <= coordinate; ++keyedEnd_) {
+  // Keys a few coordinates ahead: their hash chains are independent and overlap in the
+  // processor, where one key at a time waits for each chain (the next ones are nearly always
+  // asked for next).
+  uint64_t end = std::min<uint64_t>(std::max(coordinate + 1, keyedEnd_ + kKeysAhead),
+                                    uint64_t(kPrimeTableSize));
+  for (; keyedEnd_ < end; ++keyedEnd_) {
     Coordinate& c = coordinates_[keyedEnd_];
     c.inverse.setKey(keyOf(pixelKey_, keyedEnd_), &tables_[c.tableOffset]);
   }
