@@ -81,4 +81,7 @@ class HaltonSampler final : public Sampler {
   std::vector<uint64_t> tables_;         // the coordinates' tables
 };
 
+// getCameraSample with the sampler's values called directly, not through virtual calls.
+CameraSample getCameraSample(HaltonSampler& sampler, const Point2i& pixel, const Filter& filter);
+
 }  // namespace candela
