@@ -73,9 +73,9 @@ Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf, 
     int n = light->nSamples();
     Spectrum ld(0);
     for (int k = 0; k < n; ++k) {
-      Point2f uLight = ctx.sampler.get2D();
-      Point2f uScattering = ctx.sampler.get2D();
-      Float uComponent = ctx.sampler.get1D();
+      Point2f uLight = ctx.get2D();
+      Point2f uScattering = ctx.get2D();
+      Float uComponent = ctx.get1D();
       ld += estimateDirectThrough(it, bsdf, *light, uLight, uScattering, uComponent, scene,
                                   ctx.stats, &ctx);
     }
@@ -87,10 +87,10 @@ Spectrum uniformSampleAllLights(const SurfaceInteraction& it, const BSDF& bsdf, 
 Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, const Scene& scene,
                                IntegratorContext& ctx) {
   int nLights = int(scene.lights().size());
-  Float uChoice = ctx.sampler.get1D();
-  Point2f uLight = ctx.sampler.get2D();
-  Point2f uScattering = ctx.sampler.get2D();
-  Float uComponent = ctx.sampler.get1D();
+  Float uChoice = ctx.get1D();
+  Point2f uLight = ctx.get2D();
+  Point2f uScattering = ctx.get2D();
+  Float uComponent = ctx.get1D();
   if (nLights == 0) return Spectrum(0);
   int index = std::min(int(uChoice * nLights), nLights - 1);
   const Light& light = *scene.lights()[index];
@@ -102,8 +102,8 @@ Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, c
 Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
                                    const Scene& scene, IntegratorContext& ctx) {
   int nLights = int(scene.lights().size());
-  Float uChoice = ctx.sampler.get1D();
-  Point2f uLight = ctx.sampler.get2D();
+  Float uChoice = ctx.get1D();
+  Point2f uLight = ctx.get2D();
   if (nLights == 0) return Spectrum(0);
   const Light& light = *scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
   Vector3f wi;

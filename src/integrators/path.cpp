@@ -82,9 +82,9 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
 
     Vector3f wi;
     BxDFType sampledType;
-    Float uComponent = ctx.sampler.get1D();
-    Spectrum f = bsdf->sampleF(isect.wo, &wi, uComponent, ctx.sampler.get2D(), &scatteringPdf,
-                               kAllBxDF, &sampledType);
+    Float uComponent = ctx.get1D();
+    Spectrum f = bsdf->sampleF(isect.wo, &wi, uComponent, ctx.get2D(), &scatteringPdf, kAllBxDF,
+                               &sampledType);
     if (f.isBlack() || scatteringPdf == 0) break;
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
     specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
@@ -96,7 +96,7 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     // the last segment, which only looks for emission: it would add variance to save one ray.
     if (bounces >= rrStartDepth_ && bounces + 1 < maxDepth_) {
       Float q = std::max(Float(0.05), 1 - beta.maxComponent());
-      if (ctx.sampler.get1D() < q) break;
+      if (ctx.get1D() < q) break;
       beta /= 1 - q;
     }
     if (!beta.isFinite()) break;

@@ -107,7 +107,8 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
       // A tile of many samples a pixel takes seconds: an interrupt is noticed per sample.
       throwIfInterrupted();
       sampler->startPixelSample(pixel, s);
-      CameraSample cs = getCameraSample(*sampler, pixel, film.filter());
+      CameraSample cs = ctx.halton ? getCameraSample(*ctx.halton, pixel, film.filter())
+                                   : getCameraSample(*sampler, pixel, film.filter());
       RayDifferential ray;
       Float rayWeight = 0;
       if (differentials) {

@@ -25,17 +25,16 @@ class HaltonSampler final : public Sampler {
   int samplesPerPixel() const override { return samplesPerPixel_; }
   std::unique_ptr<Sampler> clone() const override;
   void startPixelSample(const Point2i& pixel, int sampleIndex) override;
-  Float get1D() override { return coordinateValue(coordinate_++); }
+  Float get1D() override {
+    uint64_t c = coordinate_++;
+    return c < fastEnd_ ? tabulatedValue(c) : slowValue(c);
+  }
   Point2f get2D() override {
     uint64_t c = coordinate_;
     coordinate_ += 2;
-    Float x = coordinateValue(c);
-    return Point2f(x, coordinateValue(c + 1));
+    return pair(c);
   }
-  Point2f getPixel2D() override {
-    Float x = coordinateValue(0);
-    return Point2f(x, coordinateValue(1));
-  }
+  Point2f getPixel2D() override { return pair(0); }
 
   // The key of the digit permutations of one coordinate in one pixel: coordinate c of sample i
   // there is scrambledRadicalInverse(i, kPrimes[c], coordinateKey(pixel, c, seed)).
@@ -44,21 +43,25 @@ class HaltonSampler final : public Sampler {
  private:
   struct Coordinate {
     FastScrambledRadicalInverse inverse;
-    uint64_t pixelStamp = 0;   // the pixel its key was set for (pixelStamp_); 0: none
     uint32_t tableOffset = 0;  // where its table starts in tables_
   };
 
   HaltonSampler(int samplesPerPixel, uint64_t seed,
                 std::shared_ptr<const std::vector<Coordinate>> prototype);
 
-  // The value of coordinate `coordinate` (0 and 1: the image plane) for the current sample.
-  Float coordinateValue(uint64_t coordinate) {
-    if (coordinate >= uint64_t(kPrimeTableSize)) return randomValue(coordinate);
-    Coordinate& c = coordinates_[coordinate];
-    if (c.pixelStamp != pixelStamp_) setKey(c, coordinate);
-    return c.inverse.value(sampleIndex_, &tables_[c.tableOffset]);
+  // Coordinates c and c + 1; the slow path out of line, so that the fast one needs no frame.
+  Point2f pair(uint64_t c) {
+    if (c + 1 < fastEnd_) return Point2f(tabulatedValue(c), tabulatedValue(c + 1));
+    return slowPair(c);
   }
-  void setKey(Coordinate& c, uint64_t coordinate);
+  Point2f slowPair(uint64_t c);
+  // The value of a coordinate below fastEnd_: keyed for this pixel, the sample index tabulated.
+  Float tabulatedValue(uint64_t coordinate) const {
+    const Coordinate& c = coordinates_[coordinate];
+    return c.inverse.tabulatedValue(sampleIndex_, &tables_[c.tableOffset]);
+  }
+  // Any other: keys the coordinates up to it, or past the prime table a random value.
+  Float slowValue(uint64_t coordinate);
   Float randomValue(uint64_t coordinate) const;
 
   int samplesPerPixel_;
@@ -66,12 +69,19 @@ class HaltonSampler final : public Sampler {
   // The coordinates before any key is set, shared by the clones.
   std::shared_ptr<const std::vector<Coordinate>> prototype_;
   Point2i pixel_;
+  bool started_ = false;  // a pixel sample was started
   uint32_t sampleIndex_ = 0;
   uint64_t coordinate_ = 2;  // the next coordinate after the image plane's two
-  uint64_t pixelStamp_ = 0;  // counts the pixels started; 0: none yet
-  uint64_t pixelKey_ = 0;    // the current pixel's, from which its coordinates' keys derive
+  // A pixel's samples ask for coordinates 0, 1, 2, ... in order, so the ones keyed for the
+  // current pixel are always the first keyedEnd_; fastEnd_ is keyedEnd_ while the sample index
+  // is below the tables' count, else 0 (one comparison decides the fast path).
+  uint64_t keyedEnd_ = 0, fastEnd_ = 0;
+  uint64_t pixelKey_ = 0;  // the current pixel's, from which its coordinates' keys derive
   std::vector<Coordinate> coordinates_;  // one per prime base
   std::vector<uint64_t> tables_;         // the coordinates' tables
 };
+
+// getCameraSample with the sampler's values called directly, not through virtual calls.
+CameraSample getCameraSample(HaltonSampler& sampler, const Point2i& pixel, const Filter& filter);
 
 }  // namespace candela

@@ -94,7 +94,7 @@ Float scrambledRadicalInverse(uint32_t n, uint32_t base, uint64_t key) {
 }
 
 FastScrambledRadicalInverse::FastScrambledRadicalInverse(uint32_t base, uint32_t count)
-    : base_(base), reciprocal_(~uint64_t(0) / base + 1) {
+    : reciprocal_(~uint64_t(0) / base + 1), base_(base) {
   uint64_t scale;
   int digits = expansionDigits(base, &scale);
   count_ = uint32_t(std::min<uint64_t>(std::max(count, 1u), scale));
@@ -111,7 +111,10 @@ FastScrambledRadicalInverse::FastScrambledRadicalInverse(uint32_t base, uint32_t
 void FastScrambledRadicalInverse::setKey(uint64_t key, uint64_t* table) {
   DigitMaps maps(base_, key, digits_);
   key_ = key;
-  maps.next(&a0_, &c0_);
+  uint32_t a0, c0;
+  maps.next(&a0, &c0);
+  lowFactor_ = reciprocal_ * a0;
+  lowOffset_ = reciprocal_ * c0;
   // Digits 1 .. K-1 are the table index's digits 0 .. K-2; the ones from K on are zeros of every
   // index below the count, scrambled to their offsets.
   const int k = fastDigits_;
@@ -119,8 +122,9 @@ void FastScrambledRadicalInverse::setKey(uint64_t key, uint64_t* table) {
   uint64_t weight[DigitMaps::kMaxDigits];
   for (int i = 1; i < k; ++i) maps.next(&a[i], &c[i]);
   uint64_t v0 = maps.remainingOffsets(tailScale_);
-  for (int i = k - 1; i >= 1; --i) {
-    weight[i] = power(base_, digits_ - 1 - i);
+  // Digit i's weight in V is b^(D-1-i): b^(D-K) for the last tabulated one, times b below.
+  for (int i = k - 1, w = 0; i >= 1; --i, ++w) {
+    weight[i] = w == 0 ? tailScale_ : weight[i + 1] * base_;
     v0 += c[i] * weight[i];
   }
   table[0] = v0;

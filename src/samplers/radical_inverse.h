@@ -49,9 +49,8 @@ Float scrambledRadicalInverse(uint32_t n, uint32_t base, uint64_t key);
 // scrambledRadicalInverse in one base, fast for indices below a count (the samples of a pixel),
 // for one key at a time: setKey makes the key's table of what the digits above the lowest
 // contribute (one entry per b indices, one addition each); a value is then a table entry plus the
-// lowest digit's image, with no hash or division (dividing by b is a multiplication by 2^64 / b,
-// exact for 32-bit numbers: Lemire, Kaser and Kurz 2019). Equal to scrambledRadicalInverse bit
-// for bit.
+// lowest digit's image, with no hash or division (see tabulatedValue). Equal to
+// scrambledRadicalInverse bit for bit.
 class FastScrambledRadicalInverse {
  public:
   FastScrambledRadicalInverse(uint32_t base, uint32_t count);
@@ -63,26 +62,38 @@ class FastScrambledRadicalInverse {
 
   Float value(uint32_t n, const uint64_t* table) const {
     if (n >= count_) return scrambledRadicalInverse(n, base_, key_);
-    uint32_t q = divide(n), low = n - q * base_;
-    uint32_t t = a0_ * low + c0_;
-    uint64_t v = table[q] + uint64_t(t - divide(t) * base_) * lowWeight_;
+    return tabulatedValue(n, table);
+  }
+  // value(n) for n below the count: the caller knows it is. Two multiplications by 2^64 / b
+  // (its ceiling M): the high 64 bits of M n are n / b, and the low 64 bits of M x are the
+  // fraction of x / b, whose product with b has x mod b as its high 64 bits (both exact for x
+  // below 2^32: Lemire, Kaser and Kurz 2019). The lowest digit's image (a_0 d_0 + c_0) mod b is
+  // (a_0 n + c_0) mod b, below 2^32 for n below the count, so M (a_0 n + c_0) = (M a_0) n +
+  // M c_0 modulo 2^64, two products setKey keeps.
+  Float tabulatedValue(uint32_t n, const uint64_t* table) const {
+    uint64_t lowFraction = lowFactor_ * n + lowOffset_;
+    uint64_t v = table[highBits(reciprocal_, n)] + highBits(lowFraction, base_) * lowWeight_;
     Float x = Float(double(int64_t(v)) * invScale_);  // v < 2^45
     return x < kOneMinusEpsilon ? x : kOneMinusEpsilon;
   }
+  // The count the tables cover: min(count, b^D), at least 1.
+  uint32_t count() const { return count_; }
 
  private:
-  uint32_t divide(uint32_t m) const {
-    return uint32_t((static_cast<unsigned __int128>(reciprocal_) * m) >> 64);
+  static uint64_t highBits(uint64_t a, uint64_t b) {
+    return uint64_t((static_cast<unsigned __int128>(a) * b) >> 64);
   }
 
-  // What value() reads, first.
-  uint32_t base_, count_;
-  uint32_t a0_ = 1, c0_ = 0;  // the lowest digit's map under the key
-  uint64_t reciprocal_;       // ceil(2^64 / base)
-  uint64_t lowWeight_;        // b^(D-1), the lowest digit's weight in V
-  double invScale_;           // 1 / b^D
+  // What tabulatedValue reads, first (one cache line).
+  uint64_t reciprocal_;     // M = ceil(2^64 / b)
+  uint64_t lowFactor_ = 0;  // M a_0 modulo 2^64 (a_0, c_0: the lowest digit's map under the key)
+  uint64_t lowOffset_ = 0;  // M c_0 modulo 2^64
+  uint64_t lowWeight_;      // b^(D-1), the lowest digit's weight in V
+  double invScale_;         // 1 / b^D
+  uint32_t base_;
+  // What value() past the count and setKey read.
+  uint32_t count_;
   uint64_t key_ = 0;
-  // What setKey reads.
   uint64_t tailScale_;  // b^(D-K)
   uint32_t tableSize_;
   uint8_t digits_;      // D

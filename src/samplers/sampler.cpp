@@ -1,10 +1,15 @@
 #include "samplers/sampler.h"
 
 #include "filters/filter.h"
+#include "samplers/halton_sampler.h"
 
 namespace candela {
 
-CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filter& filter) {
+namespace {
+
+// For any sampler type: the Halton sampler's overload below calls its values directly.
+template <class S>
+CameraSample cameraSample(S& sampler, const Point2i& pixel, const Filter& filter) {
   FilterSample fs = filter.sample(sampler.getPixel2D());
   CameraSample cs;
   // Pixel (x, y) covers [x, x+1) x [y, y+1); its centre is at +0.5 (lrt draft §7.1).
@@ -13,6 +18,16 @@ CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filte
   cs.time = sampler.get1D();
   cs.pLens = sampler.get2D();
   return cs;
+}
+
+}  // namespace
+
+CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filter& filter) {
+  return cameraSample(sampler, pixel, filter);
+}
+
+CameraSample getCameraSample(HaltonSampler& sampler, const Point2i& pixel, const Filter& filter) {
+  return cameraSample(sampler, pixel, filter);
 }
 
 }  // namespace candela

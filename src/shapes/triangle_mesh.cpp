@@ -154,24 +154,33 @@ bool crossingBarycentrics(const Point3f p[3], const Ray& ray, double b[3]) {
     w[2] = u[0] * v[1] - u[1] * v[0];
   };
   auto length = [](const double* w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); };
-  double e[3], edge[3][3], sum = 0;
+  double e[3], sum = 0;
   for (int k = 0; k < 3; ++k) {
-    const double *u = a[(k + 1) % 3], *v = a[(k + 2) % 3];
     double w[3];
-    cross(u, v, w);
+    cross(a[(k + 1) % 3], a[(k + 2) % 3], w);
     e[k] = d[0] * w[0] + d[1] * w[1] + d[2] * w[2];
     sum += e[k];
-    for (int i = 0; i < 3; ++i) edge[k][i] = v[i] - u[i];
   }
   if (!(sum != 0) || !std::isfinite(sum)) return false;
-  double normal[3];
-  cross(edge[2], edge[1], normal);  // (p1 - p0) x (p0 - p2): twice the area in length
-  double twiceArea = length(normal), tolerance = 64 * 0x1p-24 * magnitude, r[3];
+  double r[3];
+  bool outside = false;
   for (int k = 0; k < 3; ++k) {
     r[k] = e[k] / sum;
+    if (!std::isfinite(r[k])) return false;
+    outside = outside || r[k] < 0;
+  }
+  // The distances outside the edges only for a crossing outside some edge (an edge or corner
+  // hit), not for the inside ones most hits are.
+  if (outside) {
+    double edge[3][3];
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) edge[k][i] = a[(k + 2) % 3][i] - a[(k + 1) % 3][i];
+    double normal[3];
+    cross(edge[2], edge[1], normal);  // (p1 - p0) x (p0 - p2): twice the area in length
+    double twiceArea = length(normal), tolerance = 64 * 0x1p-24 * magnitude;
     // Below 0: outside edge k by -r[k] times the height over it.
-    if (!std::isfinite(r[k]) || (r[k] < 0 && -r[k] * twiceArea > tolerance * length(edge[k])))
-      return false;
+    for (int k = 0; k < 3; ++k)
+      if (r[k] < 0 && -r[k] * twiceArea > tolerance * length(edge[k])) return false;
   }
   for (int k = 0; k < 3; ++k) b[k] = r[k];
   return true;

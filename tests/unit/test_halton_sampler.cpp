@@ -66,10 +66,11 @@ TEST(ScrambledRadicalInverse, ScramblesEveryDigitOfTheExpansion) {
 }
 
 TEST(FastScrambledRadicalInverse, SameBitsAsTheReference) {
-  // Below the count by the tables, past it (and past b^D for base 2) by the general path.
+  // Below the count by the tables, past it (and past b^D for base 2) by the general path; 4096,
+  // the most the sampler tabulates, puts a_0 n + c_0 near its largest (2^25 for base 8161).
   std::vector<uint64_t> table;
   for (uint32_t base : {2u, 3u, 5u, 7u, 31u, 257u, 8161u})
-    for (uint32_t count : {1u, 2u, 7u, 64u, 100u, 1000u}) {
+    for (uint32_t count : {1u, 2u, 7u, 64u, 100u, 1000u, 4096u}) {
       FastScrambledRadicalInverse fast(base, count);
       ASSERT_EQ(fast.tableSize(), (count + base - 1) / base);
       table.assign(fast.tableSize(), 0);

@@ -21,6 +21,24 @@ TriangleMesh unitTriangle(const Transform& t = Transform(), bool reverse = false
                       std::move(s), std::move(uv));
 }
 
+TEST(TriangleShape, HitPointIsTheRayCrossingUnlessFarOutside) {
+  // interactionAt recomputes the barycentrics of the ray's crossing in double and uses them
+  // when the crossing is inside, or outside an edge by at most 64 float steps (here 3.8e-6);
+  // farther out it keeps the barycentrics it was given. The given ones are off on purpose.
+  TriangleMesh mesh = unitTriangle();
+  TriangleShape tri(&mesh, 0);
+  Vector3f down(0, 0, -1);
+  SurfaceInteraction inside = tri.interactionAt(Ray(Point3f(0.2f, 0.3f, 1), down), 0.25f, 0.25f, 1);
+  EXPECT_NEAR(inside.p.x, 0.2f, 1e-7);
+  EXPECT_NEAR(inside.p.y, 0.3f, 1e-7);
+  SurfaceInteraction edge = tri.interactionAt(Ray(Point3f(-1e-7f, 0.5f, 1), down), 0, 0.5f, 1);
+  EXPECT_NEAR(edge.p.x, -1e-7f, 1e-13);  // the crossing, outside the edge x = 0
+  EXPECT_NEAR(edge.p.y, 0.5f, 1e-7);
+  SurfaceInteraction far = tri.interactionAt(Ray(Point3f(-0.5f, 0.5f, 1), down), 0.1f, 0.5f, 1);
+  EXPECT_NEAR(far.p.x, 0.1f, 1e-7);  // the given barycentrics' point
+  EXPECT_NEAR(far.p.y, 0.5f, 1e-7);
+}
+
 TEST(TriangleShape, BarycentricsNormalAndDefaultUV) {
   TriangleMesh mesh = unitTriangle();
   TriangleShape tri(&mesh, 0);
