@@ -1,5 +1,7 @@
 // Independent uniform samples (pbrt 4e §8.3; not in the lrt draft): the baseline every other
-// sampler is compared against.
+// sampler is compared against. Each sample hashes (pixel, sample index, seed) once; a dimension's
+// value is then one more mix of that hash and the dimension (random_sampler.cpp), whose 64 bits
+// give a 2D value's two 24-bit halves. Still a pure function of (pixel, sample, dimension, seed).
 #pragma once
 
 #include "samplers/sampler.h"
@@ -19,8 +21,7 @@ class RandomSampler final : public Sampler {
  private:
   int samplesPerPixel_;
   uint64_t seed_;
-  Point2i pixel_;
-  int sampleIndex_ = 0;
+  uint64_t sampleKey_ = 0;  // the hash of (pixel, sample index, seed)
   uint64_t dimension_ = 0;
 };
 

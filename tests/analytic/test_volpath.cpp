@@ -18,6 +18,9 @@ namespace {
 
 constexpr int kRes = 16;
 constexpr int kSpp = 256;
+// The chromatic furnaces' (see expectBlocksAreTheSky).
+constexpr int kChromaticSpp = 1024;
+constexpr int kBlock = 4;
 
 // A smooth 8^3 density over [-1, 1]^3 (a bump on a floor of 0.2), written into the scene.
 std::string gridDensity() {
@@ -35,7 +38,7 @@ std::string gridDensity() {
 }
 
 // medium: the MakeNamedMedium's type and coefficients; the sky has radiance 1.
-std::string furnaceScene(const std::string& medium, bool cameraInside) {
+std::string furnaceScene(const std::string& medium, bool cameraInside, int spp = kSpp) {
   std::string camera = cameraInside ? "LookAt 0 0.1 -0.2  0 0 1  0 1 0\n"
                                       "MediumInterface \"\" \"fog\"\n"
                                     : "LookAt 0 0 -3  0 0 0  0 1 0\n";
@@ -45,7 +48,7 @@ std::string furnaceScene(const std::string& medium, bool cameraInside) {
          std::to_string(kRes) + "] \"integer yresolution\" [" + std::to_string(kRes) +
          "]\n"
          "Sampler \"random\" \"integer pixelsamples\" [" +
-         std::to_string(kSpp) +
+         std::to_string(spp) +
          "]\n"
          "Integrator \"volpath\" \"integer maxdepth\" [100000]\n"
          "WorldBegin\n"
@@ -108,22 +111,56 @@ TEST(VolPathFurnace, HomogeneousSeenFromOutside) {
 
 // Chromatic σs: each channel scatters at its own rate. A flight samples one channel's distance
 // (chosen by the path's throughput) and weights the others by the ratio; the product of those
-// ratios over many scatterings can have heavy tails, which would make the film's per-pixel
-// variance estimate unreliable, so besides the per-pixel check these also test the mean over the
-// pixels that see the medium against the standard error from their spread, two-sided at
-// 0.01 / 3 per channel. (At 4096 spp the homogeneous image's channel means are 1.0003, 1.0006 and
-// 0.9999, its pixels within [0.94, 1.05].)
-void expectImageMeanIsTheSky(const std::string& scene) {
-  test::TestRenderOptions o;
-  o.build.seed = 9;
-  auto r = test::renderSceneText(scene, o);
+// ratios over many scatterings has heavy tails, so a pixel's mean is far from normal: its rare
+// large weights raise both the mean and the film's variance estimate, and a pixel that drew none
+// is dark with a small variance. The per-pixel test above, at 256 spp, flagged a pixel for 15 and
+// 16 of seeds 1-60 (grid / homogeneous) with the random sampler of the time, 19 and 10 with a
+// one-hash stream: a family-wise level of about 25 %, not 1 %; at 1024 spp still 7 and 2 of 60.
+// So these test blocks of 4 x 4 pixels (16 x 1024 paths each, whose means are close to normal)
+// at 1024 spp, each channel of each block against the sky by its z from the film's variance
+// estimates (the pixels are independent), two-sided at Šidák 0.01 over the blocks and channels.
+// Measured over seeds 1-60 with both streams (240 renders): 1 false alarm (0.4 %; at Šidák 0.05,
+// 0.1 and 0.2: 11, 22 and 42 of 240, the nominal 12, 24 and 48). It finds a bias: with an
+// albedo of 0.98 instead of 1 it failed all 49 renders tried (both streams), with 0.995 19 of 20
+// (seeds 1-10, both scenes), where the per-pixel test failed 5 of those 20.
+void expectBlocksAreTheSky(const Film& film) {
+  constexpr int blocks = kRes / kBlock;
+  const int checks = blocks * blocks * 3;
+  for (int by = 0; by < blocks; ++by)
+    for (int bx = 0; bx < blocks; ++bx)
+      for (int c = 0; c < 3; ++c) {
+        double sum = 0, variance = 0;
+        for (int y = by * kBlock; y < (by + 1) * kBlock; ++y)
+          for (int x = bx * kBlock; x < (bx + 1) * kBlock; ++x) {
+            double v = film.pixelValue(Point2i(x, y))[c];
+            ASSERT_TRUE(std::isfinite(v));
+            sum += v;
+            variance += film.pixelVariance(Point2i(x, y))[c];
+          }
+        const double n = kBlock * kBlock, mean = sum / n;
+        if (variance == 0) {
+          EXPECT_NEAR(mean, 1, 1e-5) << "block " << bx << "," << by;
+          continue;
+        }
+        double z = (mean - 1) / (std::sqrt(variance) / n);
+        EXPECT_GT(stats::normalTwoSidedTail(z), stats::sidak(0.01, checks))
+            << "block " << bx << "," << by << " channel " << c << ": " << mean << " (z " << z
+            << ")";
+      }
+}
+
+// Besides the blocks, the mean over the pixels that see the medium against the standard error
+// from their spread, two-sided at 0.01 / 3 per channel (over the same 240 renders: 1 false alarm;
+// at 0.05, 0.1, 0.2: 8, 24, 44). (At 4096 spp the homogeneous image's channel means are 1.0003,
+// 1.0006 and 0.9999, its pixels within [0.94, 1.05].)
+void expectImageMeanIsTheSky(const Film& film) {
   for (int c = 0; c < 3; ++c) {
     double sum = 0, sumSq = 0;
     int n = 0;
     for (int y = 0; y < kRes; ++y)
       for (int x = 0; x < kRes; ++x) {
-        if (r.film().pixelVariance(Point2i(x, y))[c] == 0) continue;
-        double v = r.film().pixelValue(Point2i(x, y))[c];
+        if (film.pixelVariance(Point2i(x, y))[c] == 0) continue;
+        double v = film.pixelValue(Point2i(x, y))[c];
         sum += v;
         sumSq += v * v;
         ++n;
@@ -136,18 +173,22 @@ void expectImageMeanIsTheSky(const std::string& scene) {
   }
 }
 
+void expectChromaticFurnaceIsTheSky(const std::string& medium, bool cameraInside) {
+  test::TestRenderOptions o;
+  o.build.seed = 9;
+  auto r = test::renderSceneText(furnaceScene(medium, cameraInside, kChromaticSpp), o);
+  expectImageMeanIsTheSky(r.film());
+  expectBlocksAreTheSky(r.film());
+}
+
 TEST(VolPathFurnace, ChromaticHomogeneousSeenFromOutside) {
-  std::string scene = furnaceScene(
+  expectChromaticFurnaceIsTheSky(
       "\"homogeneous\" \"rgb sigma_a\" [0 0 0] \"rgb sigma_s\" [1 2 4] \"float g\" [0.5]", false);
-  expectImageMeanIsTheSky(scene);
-  expectEveryPixelIsTheSky(scene, true);
 }
 
 TEST(VolPathFurnace, ChromaticGridAroundTheCamera) {
-  std::string scene =
-      furnaceScene(gridDensity() + " \"rgb sigma_a\" [0 0 0] \"rgb sigma_s\" [3 1.5 2]", true);
-  expectImageMeanIsTheSky(scene);
-  expectEveryPixelIsTheSky(scene, true);
+  expectChromaticFurnaceIsTheSky(
+      gridDensity() + " \"rgb sigma_a\" [0 0 0] \"rgb sigma_s\" [3 1.5 2]", true);
 }
 
 TEST(VolPathFurnace, HomogeneousAroundTheCamera) {
@@ -240,7 +281,16 @@ TEST(VolPathFurnace, VolumeStatementWithAVolumeIntegratorIsStillTheSky) {
 // once off the floor, each attenuated along the way; volpath limited to one scattering event
 // (maxdepth 1: medium or surface) estimates the same image. Compared region by region (see
 // region_agreement.h for the test and its significance), for a homogeneous and an exponential
-// region (both with closed-form transmittance, so "single"'s marching is unbiased).
+// region (both with closed-form transmittance, so "single"'s marching is unbiased). The light is
+// above the fog: inside it, volpath's in-scattering estimate (I / r^2 at a distance-sampled point)
+// has infinite variance near the light (r^-4 is not integrable over a volume around a point), and
+// the region holding the light had replicate means of skewness 14, the largest 16 times the mean:
+// the exponential region failed for 4 of 44 disjoint sets of 24 seeds with the random sampler of
+// the time and 3 of 45 with a one-hash stream, though pooled over all those seeds no region
+// differed (largest |z| 1.9). With the light above the fog every region's skewness is below 0.2,
+// and with Student's tails (region_agreement.h) it fails 1 of 120 seed sets (both streams; at
+// family-wise 0.05, 0.1 and 0.2: 8, 13 and 25 of 120). It finds a bias: volpath with sigma_s 3 %
+// too large (regions 1-2 % off) fails 19 of 20 seed sets.
 std::string foggyFloor(const std::string& integrator, const std::string& region) {
   return "LookAt 0 1.2 -4  0 0.6 0  0 1 0\n"
          "Camera \"perspective\" \"float fov\" [45]\n"
@@ -248,7 +298,7 @@ std::string foggyFloor(const std::string& integrator, const std::string& region)
          "Sampler \"random\" \"integer pixelsamples\" [16]\n" +
          integrator +
          "\nWorldBegin\n"
-         "LightSource \"point\" \"point from\" [0.3 1.5 0.2] \"rgb I\" [3 3 3]\n"
+         "LightSource \"point\" \"point from\" [0.3 2.8 0.2] \"rgb I\" [10 10 10]\n"
          "Volume " +
          region +
          " \"rgb sigma_a\" [0.1 0.2 0.3] \"rgb sigma_s\" [0.6 0.5 0.4] \"float g\" [0.3]\n"

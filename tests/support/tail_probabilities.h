@@ -1,5 +1,5 @@
 // Test helper: tail probabilities for the statistical tests (chi-square goodness of fit, Poisson
-// counts) and the Šidák per-case significance.
+// counts, Student's t for means of few replicates) and the Šidák per-case significance.
 #pragma once
 
 #include <algorithm>
@@ -59,6 +59,47 @@ inline double poissonUpperTail(int64_t k, double lambda) {
   if (lambda <= 0) return 0;
   return gammaP(double(k), lambda);
 }
+namespace detail {
+// The continued fraction of the regularised incomplete beta function I_x(a, b) (modified Lentz),
+// which converges fast for x < (a + 1) / (a + b + 2).
+inline double betaContinuedFraction(double a, double b, double x) {
+  constexpr double tiny = 1e-300;
+  auto guard = [](double v) { return std::abs(v) < tiny ? tiny : v; };
+  double c = 1, d = 1 / guard(1 - (a + b) * x / (a + 1));
+  double f = d;
+  for (int m = 1; m <= 10000; ++m) {
+    // The even then the odd coefficient of the fraction.
+    const double even = m * (b - m) * x / ((a + 2 * m - 1) * (a + 2 * m));
+    d = 1 / guard(1 + even * d);
+    c = guard(1 + even / c);
+    f *= d * c;
+    const double odd = -(a + m) * (a + b + m) * x / ((a + 2 * m) * (a + 2 * m + 1));
+    d = 1 / guard(1 + odd * d);
+    c = guard(1 + odd / c);
+    f *= d * c;
+    if (std::abs(d * c - 1) < 1e-15) break;
+  }
+  return f;
+}
+}  // namespace detail
+
+// The regularised incomplete beta function I_x(a, b), a, b > 0; by the continued fraction on the
+// side of the mean where it converges, and I_x(a, b) = 1 - I_{1-x}(b, a) on the other.
+inline double incompleteBeta(double a, double b, double x) {
+  if (x <= 0) return 0;
+  if (x >= 1) return 1;
+  const double front = std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) +
+                                a * std::log(x) + b * std::log1p(-x));
+  if (x < (a + 1) / (a + b + 2)) return front * detail::betaContinuedFraction(a, b, x) / a;
+  return 1 - front * detail::betaContinuedFraction(b, a, 1 - x) / b;
+}
+
+// P(|T| >= |t|) for T Student's t with dof degrees of freedom (any real dof > 0, as Welch's
+// approximation gives).
+inline double studentTwoSidedTail(double t, double dof) {
+  return incompleteBeta(0.5 * dof, 0.5, dof / (dof + t * t));
+}
+
 // P(|Z| >= |z|) for Z standard normal.
 inline double normalTwoSidedTail(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }
 // The per-case significance that keeps the family-wise error at alpha over m independent cases.
