@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <stdexcept>
 #include <thread>
 
 #include "accel/embree/embree_device.h"
@@ -40,7 +41,7 @@ struct Options {
   int depth = 5;  // the ceiling's depth when the integrator is not "path"
   int ceilingRuns = 3;
   bool ceiling = true;
-  std::string csv = "render_bench.csv";
+  std::string csv;  // empty: no CSV file
 };
 
 struct Render {
@@ -141,13 +142,14 @@ void runCase(const RenderCase& c, const Options& o, const EmbreeDevice& device,
         ceil.cpuSeconds() > 0 ? double(ceil.rays()) / ceil.cpuSeconds() / 1e6 : 0, fraction, mean,
         se);
     std::fflush(stdout);
-    csv << c.name << ',' << threads << ',' << spp << ',' << r.cpuSeconds << ',' << r.wallSeconds
-        << ',' << r.rays.cameraRays << ',' << r.rays.intersectionRays - r.rays.cameraRays << ','
-        << r.rays.shadowRays << ',' << double(rays) / r.cpuSeconds / 1e6 << ',' << wallRate / 1e6
-        << ',' << efficiency << ',' << r.tailSeconds << ',' << ceil.camera.perCpuSecond() / 1e6
-        << ',' << ceil.bounce.perCpuSecond() / 1e6 << ',' << ceil.shadow.perCpuSecond() / 1e6 << ','
-        << ceil.rays() << ',' << ceil.cpuSeconds() << ',' << ceil.wallSeconds << ',' << fraction
-        << ',' << mean << ',' << se << ',' << renders.size() << '\n';
+    if (csv.is_open())
+      csv << c.name << ',' << threads << ',' << spp << ',' << r.cpuSeconds << ',' << r.wallSeconds
+          << ',' << r.rays.cameraRays << ',' << r.rays.intersectionRays - r.rays.cameraRays << ','
+          << r.rays.shadowRays << ',' << double(rays) / r.cpuSeconds / 1e6 << ',' << wallRate / 1e6
+          << ',' << efficiency << ',' << r.tailSeconds << ',' << ceil.camera.perCpuSecond() / 1e6
+          << ',' << ceil.bounce.perCpuSecond() / 1e6 << ',' << ceil.shadow.perCpuSecond() / 1e6
+          << ',' << ceil.rays() << ',' << ceil.cpuSeconds() << ',' << ceil.wallSeconds << ','
+          << fraction << ',' << mean << ',' << se << ',' << renders.size() << '\n';
   }
 }
 
@@ -171,7 +173,7 @@ int main(int argc, char** argv) {
   app.add_option("--ceiling-runs", o.ceilingRuns, "ceiling runs per thread count (the fastest)")
       ->check(CLI::Range(1, 100));
   app.add_flag("!--no-ceiling", o.ceiling, "render only");
-  app.add_option("--csv", o.csv, "CSV output");
+  app.add_option("--csv", o.csv, "also write the rows to this CSV file");
   CLI11_PARSE(app, argc, argv);
   if (o.threads.empty()) o.threads = defaultThreads();
   std::vector<RenderCase> run;
@@ -181,10 +183,15 @@ int main(int argc, char** argv) {
   for (const std::string& s : o.scenes) run.push_back({s.substr(s.find_last_of('/') + 1), s, ""});
   try {
     EmbreeDevice device;
-    std::ofstream csv(o.csv);
-    csv << "case,threads,spp,cpu_s,wall_s,camera_rays,bounce_rays,shadow_rays,mrays_per_cpu_s,"
-           "mrays_per_wall_s,efficiency,tail_s,ceiling_camera,ceiling_bounce,ceiling_shadow,"
-           "ceiling_rays,ceiling_cpu_s,ceiling_wall_s,fraction,image_mean,image_mean_se,seeds\n";
+    std::ofstream csv;
+    if (!o.csv.empty()) {
+      csv.open(o.csv);
+      if (!csv) throw std::runtime_error("cannot write " + o.csv);
+    }
+    if (csv.is_open())
+      csv << "case,threads,spp,cpu_s,wall_s,camera_rays,bounce_rays,shadow_rays,mrays_per_cpu_s,"
+             "mrays_per_wall_s,efficiency,tail_s,ceiling_camera,ceiling_bounce,ceiling_shadow,"
+             "ceiling_rays,ceiling_cpu_s,ceiling_wall_s,fraction,image_mean,image_mean_se,seeds\n";
     std::printf(
         "Mrays/s per thread = rays / CPU s; fraction = ceiling CPU s for candela's rays / "
         "candela CPU s\n");
