@@ -8,37 +8,42 @@ namespace candela {
 
 namespace {
 
-// volume: set when the caller can attenuate by the scene's volume (pbrt-v2 Volume regions).
+// The light strategy: one sample of `light`, chosen among `choices` lights with equal probability
+// (the strategy's density is the light's over choices), weighted by the power heuristic against
+// the BSDF's density of the direction over the components in bsdfFlags. volume: set when the
+// caller can attenuate by the scene's volume (pbrt-v2 Volume regions).
+Spectrum sampleLightStrategy(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
+                             const Point2f& uLight, Float choices, int bsdfFlags,
+                             const Scene& scene, RayStats& stats, IntegratorContext* volume) {
+  Vector3f wi;
+  Float lightPdf = 0;
+  VisibilityTester vis;
+  Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
+  if (!(lightPdf > 0) || li.isBlack()) return Spectrum(0);
+  Spectrum f = bsdf.f(it.wo, wi, kAllBxDF & ~kSpecular) * absDot(wi, bsdf.shadingNormal());
+  if (f.isBlack() || !scene.unoccluded(vis, stats)) return Spectrum(0);
+  if (volume) li *= volumeTransmittance(vis, scene, *volume);
+  Float pdf = lightPdf / choices;
+  if (light.isDelta()) return f * li / pdf;
+  return f * li * (powerHeuristic(1, pdf, 1, bsdf.pdf(it.wo, wi, bsdfFlags)) / pdf);
+}
+
+// One sample of each strategy for `light` (pbrt 2e §15.1).
 Spectrum estimateDirectThrough(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
                                const Point2f& uLight, const Point2f& uScattering, Float uComponent,
                                const Scene& scene, RayStats& stats, IntegratorContext* volume) {
   const int nonSpecular = kAllBxDF & ~kSpecular;
-  Spectrum ld(0);
-  // Light sampling.
-  Vector3f wi;
-  Float lightPdf = 0, scatteringPdf = 0;
-  VisibilityTester vis;
-  Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
-  if (lightPdf > 0 && !li.isBlack()) {
-    Spectrum f = bsdf.f(it.wo, wi, nonSpecular) * absDot(wi, bsdf.shadingNormal());
-    if (!f.isBlack() && scene.unoccluded(vis, stats)) {
-      if (volume) li *= volumeTransmittance(vis, scene, *volume);
-      if (light.isDelta()) {
-        ld += f * li / lightPdf;
-      } else {
-        scatteringPdf = bsdf.pdf(it.wo, wi, nonSpecular);
-        ld += f * li * (powerHeuristic(1, lightPdf, 1, scatteringPdf) / lightPdf);
-      }
-    }
-  }
+  Spectrum ld = sampleLightStrategy(it, bsdf, light, uLight, 1, nonSpecular, scene, stats, volume);
   // BSDF sampling, for lights that a direction can hit.
   if (!light.isDelta()) {
+    Vector3f wi;
+    Float scatteringPdf = 0;
     BxDFType sampledType;
     Spectrum f = bsdf.sampleF(it.wo, &wi, uComponent, uScattering, &scatteringPdf, nonSpecular,
                               &sampledType);
     f *= absDot(wi, bsdf.shadingNormal());
     if (!f.isBlack() && scatteringPdf > 0) {
-      lightPdf = light.pdfLi(it, wi);
+      Float lightPdf = light.pdfLi(it, wi);
       if (lightPdf == 0) return ld;
       Float weight = powerHeuristic(1, scatteringPdf, 1, lightPdf);
       SurfaceInteraction lightIsect;
@@ -106,19 +111,9 @@ Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsd
   Point2f uLight = ctx.get2D();
   if (nLights == 0) return Spectrum(0);
   const Light& light = *scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
-  Vector3f wi;
-  Float lightPdf = 0;
-  VisibilityTester vis;
-  Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
-  if (lightPdf == 0 || li.isBlack()) return Spectrum(0);
-  Spectrum f = bsdf.f(it.wo, wi, kAllBxDF & ~kSpecular) * absDot(wi, bsdf.shadingNormal());
-  if (f.isBlack() || !scene.unoccluded(vis, ctx.stats)) return Spectrum(0);
-  li *= volumeTransmittance(vis, scene, ctx);
-  // The density of this direction under the light strategy includes the choice of the light.
-  Float pdf = lightPdf / Float(nLights);
-  if (light.isDelta()) return f * li / pdf;
-  Float weight = powerHeuristic(1, pdf, 1, bsdf.pdf(it.wo, wi, kAllBxDF));
-  return f * li * (weight / pdf);
+  // The density of a direction under the light strategy includes the choice of the light.
+  return sampleLightStrategy(it, bsdf, light, uLight, Float(nLights), kAllBxDF, scene, ctx.stats,
+                             &ctx);
 }
 
 }  // namespace candela
