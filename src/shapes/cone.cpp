@@ -13,6 +13,7 @@ ConeShape::ConeShape(const Transform& objectToWorld, bool reverseOrientation, Fl
   objectArea_ = height_ != 0 ? 0.5 * phiMax_ * radius_ * std::hypot(radius_, height_) : 0;
   // dp/dv = (-r cos phi, -r sin phi, h): dp/du x dp/dv has the sign of h radially.
   crossPointsInward_ = height_ < 0;
+  setBoundingBall();
 }
 
 Bounds3f ConeShape::objectBound() const {

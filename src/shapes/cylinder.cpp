@@ -11,6 +11,7 @@ CylinderShape::CylinderShape(const Transform& objectToWorld, bool reverseOrienta
       phiMax_(phiMaxRadians(phiMaxDeg)) {
   // (zMax - zMin) phiMax r (lrt draft §3.3.4).
   objectArea_ = (zMax_ - zMin_) * phiMax_ * radius_;
+  setBoundingBall();
 }
 
 Bounds3f CylinderShape::objectBound() const {

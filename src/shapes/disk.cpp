@@ -16,6 +16,7 @@ DiskShape::DiskShape(const Transform& objectToWorld, bool reverseOrientation, Fl
   const auto& m = objectToWorld.matrix().m;
   Vector3f ex(m[0][0], m[1][0], m[2][0]), ey(m[0][1], m[1][1], m[2][1]);
   worldAreaScale_ = cross(ex, ey).length();
+  setBoundingBall();
 }
 
 Bounds3f DiskShape::objectBound() const {

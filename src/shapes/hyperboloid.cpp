@@ -34,6 +34,7 @@ HyperboloidShape::HyperboloidShape(const Transform& objectToWorld, bool reverseO
   // dp/du x dp/dv has the radial component phiMax rho dz (see geometryAt).
   crossPointsInward_ = dz < 0;
   objectArea_ = dz != 0 ? phiMax_ * profile_.areaPerRadian() : 0;
+  setBoundingBall();
 }
 
 Bounds3f HyperboloidShape::objectBound() const {

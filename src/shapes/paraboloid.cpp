@@ -14,6 +14,7 @@ ParaboloidShape::ParaboloidShape(const Transform& objectToWorld, bool reverseOri
   // rho^2 = q z: phiMax (2 / 3q) [(q z + q^2/4)^(3/2)] from zMin to zMax (pbrt 3e §3.5.2's
   // closed form, rewritten).
   objectArea_ = q_ > 0 ? phiMax_ * (2 / (3 * q_)) * (cdf(zMax_) - cdf(zMin_)) : 0;
+  setBoundingBall();
 }
 
 double ParaboloidShape::cdf(double z) const {

@@ -104,24 +104,79 @@ Bounds3f Quadric::worldBound() const {
   return wb;
 }
 
+void Quadric::setBoundingBall() {
+  Bounds3f b = objectBound();
+  double centre[3], half2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    centre[i] = 0.5 * (double(b.pMin[i]) + double(b.pMax[i]));
+    double h = 0.5 * (double(b.pMax[i]) - double(b.pMin[i]));
+    half2 += h * h;
+  }
+  setBoundingBall(centre, std::sqrt(half2));
+}
+
+void Quadric::setBoundingBall(const double centre[3], double radius) {
+  // The ball's image holds the shape's: its radius grows by the transform's largest stretch,
+  // exact for similarities, else bounded by the Frobenius norm of the linear part.
+  double stretch = worldScale_;
+  if (!isSimilarity_) {
+    stretch = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) stretch += o2w_[i][j] * o2w_[i][j];
+    stretch = std::sqrt(stretch);
+  }
+  double c[3];
+  for (int i = 0; i < 3; ++i)
+    c[i] = o2w_[i][0] * centre[0] + o2w_[i][1] * centre[1] + o2w_[i][2] * centre[2] + o2w_[i][3];
+  double r = radius * stretch * (1 + 1e-6);
+  if (!allFinite(c) || !std::isfinite(r) || !(r < 1e30)) return;  // no ball: nothing rejected
+  worldBallCentre_ = Point3f(Float(c[0]), Float(c[1]), Float(c[2]));
+  // The centre's rounding to float, and headroom.
+  worldBallRadius_ = Float(r + 1e-6 * (std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2])));
+  hasWorldBall_ = true;
+}
+
+bool Quadric::passesBall(const Ray& r) const {
+  // In float, with a margin of 1e-5 of the distances involved: the few rounding errors here are
+  // below 1e-6 of them. Whatever overflows, or is NaN, is left to findHit's own tests.
+  Vector3f v = r.o - worldBallCentre_;
+  Float dd = r.d.lengthSquared();
+  Float vNorm = std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
+  Float reach = worldBallRadius_ * (1 + Float(1e-4)) + Float(1e-5) * vNorm;
+  Float c2 = cross(v, r.d).lengthSquared(), reach2dd = reach * reach * dd;
+  if (!std::isfinite(c2) || !std::isfinite(reach2dd) || !(dd > 0)) return false;
+  if (c2 > reach2dd) return true;  // the line passes the ball by
+  // The chord along the line: outside [0, tMax] (with the same margin) it is missed.
+  Float tNear = -dot(v, r.d) / dd;
+  Float half = std::sqrt(reach2dd - c2) / dd;
+  Float slackT = Float(1e-5) * (std::abs(tNear) + half);
+  return tNear + half + slackT < 0 || tNear - half - slackT > r.tMax;
+}
+
 bool Quadric::findHit(const Ray& r, Hit* hit) const {
   // Zero-area shapes (zmin = zmax, ...) have no tangent plane to report: they are never hit.
   if (!invertible_ || !(objectArea_ > 0) || std::isnan(r.tMax)) return false;
   // To object space in double, with the bound of that arithmetic's own rounding (the float ray is
   // exact input).
-  double o[3], d[3], oErr[3], dErr[3];
+  // Most rays a callback is asked about pass the shape by: its bounding ball decides them first.
+  if (hasWorldBall_ && passesBall(r)) return false;
+  double o[3], d[3];
   for (int i = 0; i < 3; ++i) {
     const double* m = w2o_[i];
     o[i] = m[0] * r.o.x + m[1] * r.o.y + m[2] * r.o.z + m[3];
     d[i] = m[0] * r.d.x + m[1] * r.d.y + m[2] * r.d.z;
+  }
+  if (!allFinite(o) || !allFinite(d)) return false;  // NaN and infinite rays miss
+  double dd = dot3(d, d);
+  if (!(dd > 0)) return false;
+  double oErr[3], dErr[3];
+  for (int i = 0; i < 3; ++i) {
+    const double* m = w2o_[i];
     oErr[i] = doubleGamma(4) * (std::abs(m[0] * r.o.x) + std::abs(m[1] * r.o.y) +
                                 std::abs(m[2] * r.o.z) + std::abs(m[3]));
     dErr[i] =
         doubleGamma(4) * (std::abs(m[0] * r.d.x) + std::abs(m[1] * r.d.y) + std::abs(m[2] * r.d.z));
   }
-  if (!allFinite(o) || !allFinite(d)) return false;  // NaN and infinite rays miss
-  double dd = dot3(d, d);
-  if (!(dd > 0)) return false;
 
   // Move the origin along the line to the point nearest the object's origin: the coefficients
   // then stay well scaled for rays from far away (the idea of pbrt 4e §6.8.2's discriminant).

@@ -12,6 +12,7 @@
 // the exact surface, measured by the implicit function's residual.
 #pragma once
 
+#include <limits>
 #include <numbers>
 
 #include "core/paramset.h"
@@ -61,6 +62,11 @@ class Quadric : public Shape {
 
   // Object-space area, set by the derived constructor (exact, in closed form).
   double objectArea_ = 0;
+  // A ball that holds the shape, for a cheap rejection of the rays that pass it by (most rays
+  // a user-geometry callback is asked about): call one of these at the end of a derived
+  // constructor. The ball about objectBound(), or a tighter one (object space).
+  void setBoundingBall();
+  void setBoundingBall(const double centre[3], double radius);
   // The shape's parameterisation has cross(dp/du, dp/dv) pointing inward (a hyperboloid whose p2
   // is below p1, a cone of negative height): normals are turned outward. Set by the derived
   // constructor.
@@ -92,12 +98,18 @@ class Quadric : public Shape {
     double p[3];  // object space
   };
   bool findHit(const Ray& ray, Hit* hit) const;
+  // Whether the ray certainly has no point of the bounding ball for t in [0, tMax].
+  bool passesBall(const Ray& ray) const;
   // The outward object-space normal's derivatives (Weingarten equations, lrt draft §3.2.4).
   static void weingarten(const LocalGeometry& g, Normal3f* dndu, Normal3f* dndv);
   double objectExtent() const;
 
   Transform objectToWorld_;
   double o2w_[3][4], w2o_[3][4];  // the affine rows; w2o_ is o2w_'s inverse, computed in double
+  // The bounding ball in world space (setBoundingBall); none: nothing is rejected by it.
+  Point3f worldBallCentre_;
+  Float worldBallRadius_ = 0;
+  bool hasWorldBall_ = false;
   bool invertible_;
   bool reverseOrientation_, transformSwapsHandedness_;
   bool isSimilarity_;

@@ -18,6 +18,8 @@ SphereShape::SphereShape(const Transform& objectToWorld, bool reverseOrientation
   objectArea_ = phiMax_ * radius_ * (zMax_ - zMin_);
   worldCenter_ = this->objectToWorld()(Point3f(0, 0, 0));
   worldRadius_ = Float(radius_ * worldScale());
+  const double origin[3] = {0, 0, 0};
+  setBoundingBall(origin, radius_);  // for every zone and sweep
 }
 
 Bounds3f SphereShape::objectBound() const {
