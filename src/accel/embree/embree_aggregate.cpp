@@ -255,7 +255,7 @@ bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const
     *isect = transformSurfaceInteraction(*inst.instanceToWorld, *isect, ray.d);
   } else if (const EmbreeGeometry& g = *geometries_[rh.hit.geomID];
              g.kind == EmbreeGeometry::Kind::MotionInstances) {
-    const PrototypeHit& h = context.motionHit;
+    const PrototypeHit& h = *context.motionHit;  // the callback that accepted the hit made it
     const EmbreeAggregate& proto = *g.motion[rh.hit.primID].prototype;
     if (!proto.interactionAt(*proto.geometries_[h.geomID], h.primID, h.u, h.v, h.ng, t, h.localRay,
                              h.shapeRay, isect))
@@ -272,10 +272,11 @@ bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const
 
 bool EmbreeAggregate::intersectP(const Ray& ray) const {
   if (!isTraceable(ray)) return false;
-  QueryContext context;
+  RTCIntersectContext context;  // no callback of a shadow query leaves notes (QueryContext)
+  rtcInitIntersectContext(&context);
   RTCRay r;
   toEmbreeRay(ray, &r);
-  rtcOccluded1(scene_, &context.rtc, &r);
+  rtcOccluded1(scene_, &context, &r);
   return r.tfar == -kInfinity;
 }
 
