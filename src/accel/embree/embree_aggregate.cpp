@@ -205,9 +205,10 @@ void EmbreeAggregate::addInstances(const SceneGeometry& geometry) {
   }
 }
 
-bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned primID, float u, float v,
-                                    const Vector3f& ng, float t, const Ray& ray,
-                                    const Ray& shapeRay, SurfaceInteraction* isect) const {
+// Inline: every closest hit goes through it.
+inline bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned primID, float u,
+                                           float v, const Vector3f& ng, float t, const Ray& ray,
+                                           const Ray& shapeRay, SurfaceInteraction* isect) const {
   const Primitive& prim = g.primitive(primID);
   if (g.kind == EmbreeGeometry::Kind::Curves) {
     // Embree's u runs along the piece; its v and, for flat curves, Ng (the tangent there) are
