@@ -198,15 +198,19 @@ bool crossingBarycentrics(const double p[3][3], const Ray& ray, double b[3]) {
     w[2] = u[0] * v[1] - u[1] * v[0];
   };
   auto length = [](const double* w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); };
-  double e[3];
-  for (int k = 0; k < 3; ++k) {
-    double w[3];
-    cross(a[(k + 1) % 3], a[(k + 2) % 3], w);
-    e[k] = d[0] * w[0] + d[1] * w[1] + d[2] * w[2];
-  }
+  auto dot = [](const double* u, const double* v) {
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  };
+  // Two cross products for the three volumes: d . (a2 x a0) = a2 . (a0 x d) and
+  // d . (a0 x a1) = a1 . (d x a0) share d x a0.
+  double q[3], w[3];
+  cross(d, a[0], q);
+  cross(a[1], a[2], w);
+  double e[3] = {dot(d, w), -dot(a[2], q), dot(a[1], q)};
   double sum = e[0] + e[1] + e[2];
   if (!(sum != 0) || !std::isfinite(sum)) return false;
-  double r[3] = {e[0] / sum, e[1] / sum, e[2] / sum};
+  double invSum = 1 / sum;
+  double r[3] = {e[0] * invSum, e[1] * invSum, e[2] * invSum};
   // One test for all three: an infinite or NaN ratio makes the sum so (finite ratios near 1e308
   // that overflow it only send a hit back to its float barycentrics).
   if (!std::isfinite(r[0] + r[1] + r[2])) return false;
