@@ -66,18 +66,9 @@ bool toPrototype(RTCRayN* rays, unsigned N, unsigned i, const AnimatedTransform&
   Point3f o = toLocal(world.o);
   Vector3f d = toLocal(world.d);
   if (!withinTraceableRange(o, d)) return false;
-  out->org_x = o.x;
-  out->org_y = o.y;
-  out->org_z = o.z;
-  out->dir_x = d.x;
-  out->dir_y = d.y;
-  out->dir_z = d.z;
+  toEmbreeRay(Ray(o, d, kInfinity, world.time), out);
   out->tnear = RTCRayN_tnear(rays, N, i);
   out->tfar = RTCRayN_tfar(rays, N, i);
-  out->time = world.time;
-  out->mask = 0xFFFFFFFFu;
-  out->id = 0;
-  out->flags = 0;
   return true;
 }
 
