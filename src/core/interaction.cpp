@@ -10,24 +10,6 @@ SurfaceInteraction::SurfaceInteraction(const Point3f& p_, const Vector3f& pError
     : SurfaceInteraction(p_, pError_, uv_, wo_, dpdu_, dpdv_, dndu_, dndv_, time_,
                          Normal3f(normalize(cross(dpdu_, dpdv_))) * (flipNormal ? -1 : 1)) {}
 
-SurfaceInteraction::SurfaceInteraction(const Point3f& p_, const Vector3f& pError_,
-                                       const Point2f& uv_, const Vector3f& wo_,
-                                       const Vector3f& dpdu_, const Vector3f& dpdv_,
-                                       const Normal3f& dndu_, const Normal3f& dndv_, Float time_,
-                                       const Normal3f& n_)
-    : Interaction(p_, n_, pError_, wo_, time_),
-      uv(uv_),
-      dpdu(dpdu_),
-      dpdv(dpdv_),
-      dndu(dndu_),
-      dndv(dndv_) {
-  shading.n = n;
-  shading.dpdu = dpdu;
-  shading.dpdv = dpdv;
-  shading.dndu = dndu;
-  shading.dndv = dndv;
-}
-
 void SurfaceInteraction::setShadingGeometry(const Vector3f& dpdus, const Vector3f& dpdvs,
                                             const Normal3f& dndus, const Normal3f& dndvs,
                                             bool orientationIsAuthoritative) {

@@ -60,9 +60,18 @@ struct SurfaceInteraction : Interaction {
                      const Vector3f& wo, const Vector3f& dpdu, const Vector3f& dpdv,
                      const Normal3f& dndu, const Normal3f& dndv, Float time, bool flipNormal);
   // With the unit geometric normal n given, oriented as the shape orients it (shading.n = n).
-  SurfaceInteraction(const Point3f& p, const Vector3f& pError, const Point2f& uv,
-                     const Vector3f& wo, const Vector3f& dpdu, const Vector3f& dpdv,
-                     const Normal3f& dndu, const Normal3f& dndv, Float time, const Normal3f& n);
+  // Inline and with every member in the initialiser list, so that a shape can build a hit in
+  // place (std::construct_at) without first zeroing it or copying a temporary.
+  SurfaceInteraction(const Point3f& p_, const Vector3f& pError_, const Point2f& uv_,
+                     const Vector3f& wo_, const Vector3f& dpdu_, const Vector3f& dpdv_,
+                     const Normal3f& dndu_, const Normal3f& dndv_, Float time_, const Normal3f& n_)
+      : Interaction(p_, n_, pError_, wo_, time_),
+        uv(uv_),
+        dpdu(dpdu_),
+        dpdv(dpdv_),
+        dndu(dndu_),
+        dndv(dndv_),
+        shading{n_, dpdu_, dpdv_, dndu_, dndv_} {}
   // Shading frame from interpolated normals etc.; the geometric normal is turned to its side
   // when orientationIsAuthoritative, else the shading normal is turned to the geometric side.
   void setShadingGeometry(const Vector3f& dpdus, const Vector3f& dpdvs, const Normal3f& dndus,

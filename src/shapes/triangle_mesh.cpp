@@ -2,12 +2,68 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 
 #include "core/sampling.h"
 #include "shapes/ply_reader.h"
 #include "textures/texture.h"
 
 namespace candela {
+
+namespace {
+
+// Per-vertex (u, v), or the draft's default parameterisation (lrt draft §3.6.2).
+void vertexUVs(const TriangleMesh& mesh, const int* v, Point2f uv[3]) {
+  if (mesh.uv.empty()) {
+    uv[0] = Point2f(0, 0);
+    uv[1] = Point2f(1, 0);
+    uv[2] = Point2f(1, 1);
+  } else {
+    for (int i = 0; i < 3; ++i) uv[i] = mesh.uv[v[i]];
+  }
+}
+
+// The (u, v) differences of the 2x2 systems for dp/du, dp/dv and dn/du, dn/dv (lrt draft
+// §3.6.2), and the inverse of their determinant; false (and *invDet 0) when (u, v) is degenerate.
+bool uvSystem(const TriangleMesh& mesh, const int* v, Vector2f* duv02, Vector2f* duv12,
+              Float* invDet) {
+  Point2f uv[3];
+  vertexUVs(mesh, v, uv);
+  *duv02 = uv[0] - uv[2];
+  *duv12 = uv[1] - uv[2];
+  Float determinant = duv02->x * duv12->y - duv02->y * duv12->x;
+  bool degenerate = std::abs(determinant) < 1e-8f;
+  *invDet = degenerate ? 0 : 1 / determinant;
+  return !degenerate;
+}
+
+// dp/du and dp/dv from the 2x2 system dp02 = duv02 (dpdu dpdv)^T, dp12 likewise (lrt draft
+// §3.6.2); degenerate (u, v) gives an arbitrary frame around the normal. The default (u, v)
+// (0, 0), (1, 0), (1, 1) solve to p1 - p0 and p2 - p1.
+void positionDerivatives(const TriangleMesh& mesh, const int* v, Vector3f* dpdu, Vector3f* dpdv) {
+  const Point3f &p0 = mesh.p[v[0]], &p1 = mesh.p[v[1]], &p2 = mesh.p[v[2]];
+  bool degenerateUV = false;
+  if (mesh.uv.empty()) {
+    *dpdu = p1 - p0;
+    *dpdv = p2 - p1;
+  } else {
+    Vector2f duv02, duv12;
+    Float invDet;
+    degenerateUV = !uvSystem(mesh, v, &duv02, &duv12, &invDet);
+    if (!degenerateUV) {
+      Vector3f dp02 = p0 - p2, dp12 = p1 - p2;
+      *dpdu = (dp02 * duv12.y - dp12 * duv02.y) * invDet;
+      *dpdv = (dp12 * duv02.x - dp02 * duv12.x) * invDet;
+    }
+  }
+  if (degenerateUV || cross(*dpdu, *dpdv).lengthSquared() == 0) {
+    Vector3f ng = cross(p2 - p0, p1 - p0);
+    Vector3f axis = ng.lengthSquared() > 0 ? normalize(ng) : Vector3f(0, 0, 1);
+    coordinateSystem(axis, dpdu, dpdv);
+  }
+}
+
+}  // namespace
 
 TriangleMesh::TriangleMesh(const Transform& objectToWorld, bool reverseOrientation_,
                            std::vector<int> indices_, std::vector<Point3f> p_,
@@ -34,7 +90,10 @@ TriangleMesh::TriangleMesh(const Transform& objectToWorld, bool reverseOrientati
     if (std::any_of(v, v + 3, [&](int k) { return k < 0 || size_t(k) >= p.size(); })) continue;
     Vector3f c = cross(p[v[0]] - p[v[2]], p[v[1]] - p[v[2]]);
     Float length = c.length();
-    faces[i] = Face{length > 0 ? Normal3f(c / length) : Normal3f(0, 0, 1), 0.5f * length};
+    Face& face = faces[i];
+    face.n = length > 0 ? Normal3f(c / length) : Normal3f(0, 0, 1);
+    face.area = 0.5f * length;
+    positionDerivatives(*this, v, &face.dpdu, &face.dpdv);
   }
 }
 
@@ -119,17 +178,6 @@ bool intersectTriangle(const Point3f& p0, const Point3f& p1, const Point3f& p2, 
   return true;
 }
 
-// Per-vertex (u, v), or the draft's default parameterisation (lrt draft §3.6.2).
-void vertexUVs(const TriangleMesh& mesh, const int* v, Point2f uv[3]) {
-  if (mesh.uv.empty()) {
-    uv[0] = Point2f(0, 0);
-    uv[1] = Point2f(1, 0);
-    uv[2] = Point2f(1, 1);
-  } else {
-    for (int i = 0; i < 3; ++i) uv[i] = mesh.uv[v[i]];
-  }
-}
-
 Vector3f absWeighted(Float b, const Point3f& p) { return abs(Vector3f(p)) * std::abs(b); }
 
 // The barycentrics of the ray's crossing of the triangle's plane, in double: the signed volumes
@@ -140,38 +188,38 @@ Vector3f absWeighted(Float b, const Point3f& p) { return abs(Vector3f(p)) * std:
 // at the origin. Returns false, leaving b alone, when the crossing lies more than 64 float steps
 // (at the largest coordinate of the vertices and the origin) outside the triangle: a ray in its
 // plane, or a grazing hit that float arithmetic decided.
-bool crossingBarycentrics(const Point3f p[3], const Ray& ray, double b[3]) {
+bool crossingBarycentrics(const double p[3][3], const Ray& ray, double b[3]) {
   double o[3] = {ray.o.x, ray.o.y, ray.o.z}, d[3] = {ray.d.x, ray.d.y, ray.d.z}, a[3][3];
-  double magnitude = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
   for (int k = 0; k < 3; ++k)
-    for (int i = 0; i < 3; ++i) {
-      a[k][i] = double(p[k][i]) - o[i];
-      magnitude = std::max(magnitude, std::abs(double(p[k][i])));
-    }
+    for (int i = 0; i < 3; ++i) a[k][i] = p[k][i] - o[i];
   auto cross = [](const double* u, const double* v, double* w) {
     w[0] = u[1] * v[2] - u[2] * v[1];
     w[1] = u[2] * v[0] - u[0] * v[2];
     w[2] = u[0] * v[1] - u[1] * v[0];
   };
   auto length = [](const double* w) { return std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]); };
-  double e[3], sum = 0;
-  for (int k = 0; k < 3; ++k) {
-    double w[3];
-    cross(a[(k + 1) % 3], a[(k + 2) % 3], w);
-    e[k] = d[0] * w[0] + d[1] * w[1] + d[2] * w[2];
-    sum += e[k];
-  }
+  auto dot = [](const double* u, const double* v) {
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  };
+  // Two cross products for the three volumes: d . (a2 x a0) = a2 . (a0 x d) and
+  // d . (a0 x a1) = a1 . (d x a0) share d x a0.
+  double q[3], w[3];
+  cross(d, a[0], q);
+  cross(a[1], a[2], w);
+  double e[3] = {dot(d, w), -dot(a[2], q), dot(a[1], q)};
+  double sum = e[0] + e[1] + e[2];
   if (!(sum != 0) || !std::isfinite(sum)) return false;
-  double r[3];
-  bool outside = false;
-  for (int k = 0; k < 3; ++k) {
-    r[k] = e[k] / sum;
-    if (!std::isfinite(r[k])) return false;
-    outside = outside || r[k] < 0;
-  }
+  double invSum = 1 / sum;
+  double r[3] = {e[0] * invSum, e[1] * invSum, e[2] * invSum};
+  // One test for all three: an infinite or NaN ratio makes the sum so (finite ratios near 1e308
+  // that overflow it only send a hit back to its float barycentrics).
+  if (!std::isfinite(r[0] + r[1] + r[2])) return false;
   // The distances outside the edges only for a crossing outside some edge (an edge or corner
   // hit), not for the inside ones most hits are.
-  if (outside) {
+  if (r[0] < 0 || r[1] < 0 || r[2] < 0) {
+    double magnitude = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) magnitude = std::max(magnitude, std::abs(p[k][i]));
     double edge[3][3];
     for (int k = 0; k < 3; ++k)
       for (int i = 0; i < 3; ++i) edge[k][i] = a[(k + 2) % 3][i] - a[(k + 1) % 3][i];
@@ -226,7 +274,8 @@ bool TriangleShape::alphaCulls(const Ray& ray, Float b1, Float b2, Float t, bool
   return a && a->evaluate(interactionAt(ray, b1, b2, t)) == 0;
 }
 
-Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2, Float* area) const {
+// Inline: every hit and light sample needs it.
+inline Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2, Float* area) const {
   const TriangleMesh::Face& face = mesh_->faces[index_];
   if (area) *area = face.area;
   const Normal3f& n = face.n;
@@ -251,54 +300,31 @@ void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float 
                                   SurfaceInteraction* out) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
-  const Point3f corners[3] = {p0, p1, p2};
+  const TriangleMesh::Face& face = mesh_->faces[index_];
+  const double pd[3][3] = {{p0.x, p0.y, p0.z}, {p1.x, p1.y, p1.z}, {p2.x, p2.y, p2.z}};
   double b[3] = {1 - double(b1In) - double(b2In), b1In, b2In};
-  crossingBarycentrics(corners, ray, b);
+  crossingBarycentrics(pd, ray, b);
   Float b0 = Float(b[0]), b1 = Float(b[1]), b2 = Float(b[2]);
-  Point2f uv[3];
-  vertexUVs(*mesh_, vi, uv);
-
-  // dp/du and dp/dv from the 2x2 system dp02 = duv02 (dpdu dpdv)^T, dp12 likewise (lrt draft
-  // §3.6.2); degenerate (u, v) gives an arbitrary frame around the normal. The default (u, v)
-  // (0, 0), (1, 0), (1, 1) solve to p1 - p0 and p2 - p1.
-  Vector2f duv02 = uv[0] - uv[2], duv12 = uv[1] - uv[2];
-  Vector3f dpdu, dpdv;
-  Float invDet = 1;
-  bool degenerateUV = false;
-  if (mesh_->uv.empty()) {
-    dpdu = p1 - p0;
-    dpdv = p2 - p1;
-  } else {
-    Vector3f dp02 = p0 - p2, dp12 = p1 - p2;
-    Float determinant = duv02.x * duv12.y - duv02.y * duv12.x;
-    degenerateUV = std::abs(determinant) < 1e-8f;
-    invDet = degenerateUV ? 0 : 1 / determinant;
-    if (!degenerateUV) {
-      dpdu = (dp02 * duv12.y - dp12 * duv02.y) * invDet;
-      dpdv = (dp12 * duv02.x - dp02 * duv12.x) * invDet;
-    }
-  }
-  if (degenerateUV || cross(dpdu, dpdv).lengthSquared() == 0) {
-    Vector3f ng = cross(p2 - p0, p1 - p0);
-    Vector3f axis = ng.lengthSquared() > 0 ? normalize(ng) : Vector3f(0, 0, 1);
-    coordinateSystem(axis, &dpdu, &dpdv);
-  }
 
   // The hit point from the barycentrics, interpolated in double (float weights would lose what
   // crossingBarycentrics gained), with the bound of pbrt 3e §3.9.4 for float barycentrics: the
   // offset that keeps spawned rays clear of the triangle must cover Embree's and the watertight
   // test's float view of it.
-  Point3f pHit(Float(b[0] * p0.x + b[1] * p1.x + b[2] * p2.x),
-               Float(b[0] * p0.y + b[1] * p1.y + b[2] * p2.y),
-               Float(b[0] * p0.z + b[1] * p1.z + b[2] * p2.z));
+  Point3f pHit(Float(b[0] * pd[0][0] + b[1] * pd[1][0] + b[2] * pd[2][0]),
+               Float(b[0] * pd[0][1] + b[1] * pd[1][1] + b[2] * pd[2][1]),
+               Float(b[0] * pd[0][2] + b[1] * pd[1][2] + b[2] * pd[2][2]));
   Vector3f pError = (absWeighted(b0, p0) + absWeighted(b1, p1) + absWeighted(b2, p2)) * gamma(7);
-  Point2f uvHit = uv[0] * b0 + uv[1] * b1 + uv[2] * b2;
+  // The default (u, v) (0, 0), (1, 0), (1, 1) interpolate to (b1 + b2, b2).
+  Point2f uvHit = mesh_->uv.empty()
+                      ? Point2f(b1 + b2, b2)
+                      : mesh_->uv[vi[0]] * b0 + mesh_->uv[vi[1]] * b1 + mesh_->uv[vi[2]] * b2;
   Vector3f wo = -ray.d;
   Float woLen = wo.length();
   if (woLen > 0) wo = wo / woLen;
-  SurfaceInteraction& isect = *out;
-  isect = SurfaceInteraction(pHit, pError, uvHit, wo, dpdu, dpdv, Normal3f(), Normal3f(), ray.time,
-                             orientedNormal(b0, b1, b2));
+  // Built in place: *out may be the caller's reused interaction; every member is written.
+  SurfaceInteraction& isect =
+      *std::construct_at(out, pHit, pError, uvHit, wo, face.dpdu, face.dpdv, Normal3f(), Normal3f(),
+                         ray.time, orientedNormal(b0, b1, b2));
 
   if (mesh_->n.empty() && mesh_->s.empty()) return;
   // Shading frame from interpolated normal and tangent (lrt draft §3.6.3): ss is the tangent
@@ -322,7 +348,9 @@ void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float 
   }
   // dn/du, dn/dv of the interpolated normal, by the same 2x2 solve as dp/du, dp/dv.
   Normal3f dndu, dndv;
-  if (!mesh_->n.empty() && !degenerateUV) {
+  Vector2f duv02, duv12;
+  Float invDet;
+  if (!mesh_->n.empty() && uvSystem(*mesh_, vi, &duv02, &duv12, &invDet)) {
     Normal3f dn1 = mesh_->n[vi[0]] - mesh_->n[vi[2]], dn2 = mesh_->n[vi[1]] - mesh_->n[vi[2]];
     dndu = (dn1 * duv12.y - dn2 * duv02.y) * invDet;
     dndv = (dn2 * duv02.x - dn1 * duv12.x) * invDet;

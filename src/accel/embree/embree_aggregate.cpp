@@ -205,9 +205,10 @@ void EmbreeAggregate::addInstances(const SceneGeometry& geometry) {
   }
 }
 
-bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned primID, float u, float v,
-                                    const Vector3f& ng, float t, const Ray& ray,
-                                    const Ray& shapeRay, SurfaceInteraction* isect) const {
+// Inline: every closest hit goes through it.
+inline bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned primID, float u,
+                                           float v, const Vector3f& ng, float t, const Ray& ray,
+                                           const Ray& shapeRay, SurfaceInteraction* isect) const {
   const Primitive& prim = g.primitive(primID);
   if (g.kind == EmbreeGeometry::Kind::Curves) {
     // Embree's u runs along the piece; its v and, for flat curves, Ng (the tangent there) are
@@ -255,7 +256,7 @@ bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const
     *isect = transformSurfaceInteraction(*inst.instanceToWorld, *isect, ray.d);
   } else if (const EmbreeGeometry& g = *geometries_[rh.hit.geomID];
              g.kind == EmbreeGeometry::Kind::MotionInstances) {
-    const PrototypeHit& h = context.motionHit;
+    const PrototypeHit& h = *context.motionHit;  // the callback that accepted the hit made it
     const EmbreeAggregate& proto = *g.motion[rh.hit.primID].prototype;
     if (!proto.interactionAt(*proto.geometries_[h.geomID], h.primID, h.u, h.v, h.ng, t, h.localRay,
                              h.shapeRay, isect))
@@ -272,10 +273,11 @@ bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const
 
 bool EmbreeAggregate::intersectP(const Ray& ray) const {
   if (!isTraceable(ray)) return false;
-  QueryContext context;
+  RTCIntersectContext context;  // no callback of a shadow query leaves notes (QueryContext)
+  rtcInitIntersectContext(&context);
   RTCRay r;
   toEmbreeRay(ray, &r);
-  rtcOccluded1(scene_, &context.rtc, &r);
+  rtcOccluded1(scene_, &context, &r);
   return r.tfar == -kInfinity;
 }
 

@@ -66,38 +66,13 @@ bool toPrototype(RTCRayN* rays, unsigned N, unsigned i, const AnimatedTransform&
   Point3f o = toLocal(world.o);
   Vector3f d = toLocal(world.d);
   if (!withinTraceableRange(o, d)) return false;
-  out->org_x = o.x;
-  out->org_y = o.y;
-  out->org_z = o.z;
-  out->dir_x = d.x;
-  out->dir_y = d.y;
-  out->dir_z = d.z;
+  toEmbreeRay(Ray(o, d, kInfinity, world.time), out);
   out->tnear = RTCRayN_tnear(rays, N, i);
   out->tfar = RTCRayN_tfar(rays, N, i);
-  out->time = world.time;
-  out->mask = 0xFFFFFFFFu;
-  out->id = 0;
-  out->flags = 0;
   return true;
 }
 
 }  // namespace
-
-void toEmbreeRay(const Ray& ray, RTCRay* r) {
-  r->org_x = ray.o.x;
-  r->org_y = ray.o.y;
-  r->org_z = ray.o.z;
-  r->dir_x = ray.d.x;
-  r->dir_y = ray.d.y;
-  r->dir_z = ray.d.z;
-  r->tnear = kEmbreeTNear;
-  // Closed on Embree's side: the float just below tMax keeps tMax itself out.
-  r->tfar = nextFloatDown(ray.tMax);
-  r->time = ray.time;
-  r->mask = 0xFFFFFFFFu;
-  r->id = 0;
-  r->flags = 0;
-}
 
 void shapeBounds(const RTCBoundsFunctionArguments* args) {
   BoundsCallbackOrder order(args->geometryUserPtr);
@@ -151,7 +126,7 @@ void motionIntersect(const RTCIntersectFunctionNArguments* args) {
     rtcIntersect1(m.scene, &inner.rtc, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
     acceptHit(args, i, rh.ray.tfar);
-    PrototypeHit& note = context->motionHit;
+    PrototypeHit& note = context->motionHit.emplace();
     note.geomID = rh.hit.geomID;
     note.primID = rh.hit.primID;
     note.u = rh.hit.u;
@@ -172,8 +147,9 @@ void motionOccluded(const RTCOccludedFunctionNArguments* args) {
     RTCRay r;
     Transform toWorld;
     if (!toPrototype(args->ray, N, i, *m.instanceToWorld, &toWorld, &r)) continue;
-    QueryContext inner;
-    rtcOccluded1(m.scene, &inner.rtc, &r);
+    RTCIntersectContext inner;
+    rtcInitIntersectContext(&inner);
+    rtcOccluded1(m.scene, &inner, &r);
     if (r.tfar == -kInfinity) RTCRayN_tfar(args->ray, N, i) = -kInfinity;
   }
 }

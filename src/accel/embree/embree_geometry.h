@@ -6,6 +6,7 @@
 #include <embree3/rtcore.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "accel/primitive.h"
@@ -66,17 +67,34 @@ struct PrototypeHit {
 // callbacks can leave notes here. A callback that accepts a hit overwrites the ray's tfar and
 // hit record, and any later hit must be closer, so the final hit is the last one written: the
 // notes of the last writer of each kind are the ones that belong to the final hit.
+// Shadow queries leave no notes: they use a bare RTCIntersectContext.
 struct QueryContext {
   RTCIntersectContext rtc;  // must stay the first member: Embree sees only this
   // The ray (in the space of its geometry) on which a Shapes callback last accepted a hit.
   // Re-running the shape's intersection on exactly this ray gives exactly the same t.
   Ray shapeRay;
-  PrototypeHit motionHit;  // the last hit accepted by a MotionInstances callback
+  // The last hit accepted by a MotionInstances callback; made by that callback, since building
+  // one (two rays and a transform) for every query would cost more than most queries' own work.
+  std::optional<PrototypeHit> motionHit;
   QueryContext() { rtcInitIntersectContext(&rtc); }
 };
 
-// The ray as Embree wants it, over (0, tMax).
-void toEmbreeRay(const Ray& ray, RTCRay* r);
+// The ray as Embree wants it, over (0, tMax). Inline: every query makes one.
+inline void toEmbreeRay(const Ray& ray, RTCRay* r) {
+  r->org_x = ray.o.x;
+  r->org_y = ray.o.y;
+  r->org_z = ray.o.z;
+  r->dir_x = ray.d.x;
+  r->dir_y = ray.d.y;
+  r->dir_z = ray.d.z;
+  r->tnear = kEmbreeTNear;
+  // Closed on Embree's side: the float just below tMax keeps tMax itself out.
+  r->tfar = nextFloatDown(ray.tMax);
+  r->time = ray.time;
+  r->mask = 0xFFFFFFFFu;
+  r->id = 0;
+  r->flags = 0;
+}
 
 // A scene build runs the bounds callbacks on TBB's threads inside Embree; its two orders, declared
 // to ThreadSanitizer (core/happens_before.h): the geometry as attached happens before each
