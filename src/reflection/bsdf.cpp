@@ -2,17 +2,6 @@
 
 namespace candela {
 
-BSDF::BSDF(const SurfaceInteraction& si, Float eta_) : eta(eta_), ns_(si.shading.n), ng_(si.n) {
-  // Gram-Schmidt dpdu against the shading normal; fall back to any frame when degenerate.
-  Vector3f s = si.shading.dpdu - ns_ * dot(ns_, si.shading.dpdu);
-  if (s.lengthSquared() > 1e-20f && std::isfinite(s.lengthSquared())) {
-    ss_ = normalize(s);
-    ts_ = cross(ns_, ss_);
-  } else {
-    coordinateSystem(ns_, &ss_, &ts_);
-  }
-}
-
 int BSDF::countMatching(int flags) const {
   int n = 0;
   for (int i = 0; i < count_; ++i)

@@ -12,7 +12,18 @@ namespace candela {
 class BSDF {
  public:
   static constexpr int kMaxBxDFs = 8;
-  explicit BSDF(const SurfaceInteraction& si, Float eta = 1);
+  explicit BSDF(const SurfaceInteraction& si, Float eta_ = 1)
+      : eta(eta_), ns_(si.shading.n), ng_(si.n) {
+    // Gram-Schmidt dpdu against the shading normal; any frame when degenerate. Inline: made
+    // once per path vertex, where the call was a tenth of its cost.
+    Vector3f s = si.shading.dpdu - ns_ * dot(ns_, si.shading.dpdu);
+    if (s.lengthSquared() > 1e-20f && std::isfinite(s.lengthSquared())) {
+      ss_ = normalize(s);
+      ts_ = cross(ns_, ss_);
+    } else {
+      coordinateSystem(ns_, &ss_, &ts_);
+    }
+  }
   void add(const BxDF* b) {
     if (count_ < kMaxBxDFs) bxdfs_[count_++] = b;
     lambertian_ = nullptr;
