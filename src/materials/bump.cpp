@@ -45,11 +45,9 @@ SurfaceInteraction bump(const Texture<Float>& displacement, const SurfaceInterac
   return r;
 }
 
-const SurfaceInteraction& Material::shadingPoint(const SurfaceInteraction& si,
-                                                 SurfaceInteraction* storage) const {
-  if (!bump_) return si;
-  *storage = bump(*bump_, si);
-  return *storage;
+const SurfaceInteraction& Material::bumpedPoint(const SurfaceInteraction& si,
+                                                BumpedPointStorage* storage) const {
+  return storage->emplace(bump(*bump_, si));
 }
 
 }  // namespace candela

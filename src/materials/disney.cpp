@@ -27,7 +27,7 @@ const TrowbridgeReitzDistribution* distribution(Float roughness, Float aspect, M
 }  // namespace
 
 const BSDF* DisneyMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   Spectrum c = clampSpectrum(t_.color->evaluate(si), 0, 1);
   Float metallic = unit(t_.metallic, si), specTrans = unit(t_.specTrans, si);

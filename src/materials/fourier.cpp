@@ -5,7 +5,7 @@
 namespace candela {
 
 const BSDF* FourierMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
   bsdf->add(arena.make<FourierBSDF>(table_.get()));

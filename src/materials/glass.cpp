@@ -6,7 +6,7 @@
 namespace candela {
 
 const BSDF* GlassMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   Float eta = index_->evaluate(si);
   BSDF* bsdf = arena.make<BSDF>(si, eta);

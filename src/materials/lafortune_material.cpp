@@ -3,7 +3,7 @@
 namespace candela {
 
 const BSDF* LafortuneMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
   // The draft declares its fits REFLECTION | DIFFUSE (lrt draft §10.9).

@@ -3,6 +3,9 @@
 // shading frame before its BxDFs are chosen.
 #pragma once
 
+#include <new>
+#include <type_traits>
+
 #include "core/memory.h"
 #include "reflection/bsdf.h"
 #include "textures/texture.h"
@@ -10,6 +13,21 @@
 namespace candela {
 
 class SubsurfaceScattering;
+
+// Room for a material's bumped copy of a hit point, left uninitialised until a bump map writes
+// it. (std::optional would do, but GCC 12 zeroes all of its ~250 bytes on construction, GCC PR
+// 86173, on every hit of every material.)
+class BumpedPointStorage {
+ public:
+  BumpedPointStorage() {}
+  const SurfaceInteraction& emplace(const SurfaceInteraction& si) {
+    return *new (bytes_) SurfaceInteraction(si);
+  }
+
+ private:
+  static_assert(std::is_trivially_destructible_v<SurfaceInteraction>, "never destroyed");
+  alignas(SurfaceInteraction) unsigned char bytes_[sizeof(SurfaceInteraction)];
+};
 
 class Material {
  public:
@@ -25,11 +43,16 @@ class Material {
   virtual const SubsurfaceScattering* subsurface() const { return nullptr; }
 
  protected:
-  // si itself without a bump map; else si with the bumped shading frame, written to *storage.
+  // si itself without a bump map; else si with the bumped shading frame, made in *storage.
   const SurfaceInteraction& shadingPoint(const SurfaceInteraction& si,
-                                         SurfaceInteraction* storage) const;
+                                         BumpedPointStorage* storage) const {
+    return bump_ ? bumpedPoint(si, storage) : si;
+  }
 
  private:
+  const SurfaceInteraction& bumpedPoint(const SurfaceInteraction& si,
+                                        BumpedPointStorage* storage) const;
+
   const Texture<Float>* bump_;
 };
 

@@ -1,15 +1,41 @@
 #include "materials/matte.h"
 
-#include "reflection/oren_nayar.h"
-
 namespace candela {
 
+namespace {
+Spectrum reflectance(const Spectrum& kd) { return clampSpectrum(kd, 0, kInfinity); }
+Float slopeDeviation(Float sigma) { return clamp(sigma, 0, 90); }
+}  // namespace
+
+MatteMaterial::MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* sigma,
+                             const Texture<Float>* bump)
+    : Material(bump), kd_(kd), sigma_(sigma) {
+  auto* kdConstant = dynamic_cast<const ConstantTexture<Spectrum>*>(kd);
+  auto* sigmaConstant = dynamic_cast<const ConstantTexture<Float>*>(sigma);
+  if (!kdConstant || !sigmaConstant) return;
+  constant_ = true;
+  Spectrum r = reflectance(kdConstant->value());
+  Float s = slopeDeviation(sigmaConstant->value());
+  if (r.isBlack()) return;
+  if (s == 0)
+    constantLambertian_ = std::make_unique<const LambertianReflection>(r);
+  else
+    constantOrenNayar_ = std::make_unique<const OrenNayar>(r, s);
+}
+
 const BSDF* MatteMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
-  Spectrum r = clampSpectrum(kd_->evaluate(si), 0, kInfinity);
-  Float sigma = clamp(sigma_->evaluate(si), 0, 90);
+  if (constant_) {
+    if (constantLambertian_)
+      bsdf->add(constantLambertian_.get());
+    else if (constantOrenNayar_)
+      bsdf->add(constantOrenNayar_.get());
+    return bsdf;
+  }
+  Spectrum r = reflectance(kd_->evaluate(si));
+  Float sigma = slopeDeviation(sigma_->evaluate(si));
   if (r.isBlack()) return bsdf;
   if (sigma == 0)
     bsdf->add(arena.make<LambertianReflection>(r));

@@ -1,20 +1,28 @@
 // "matte": Lambertian when sigma is 0, Oren-Nayar otherwise (lrt draft §10.2).
 #pragma once
 
+#include <memory>
+
 #include "materials/material.h"
+#include "reflection/oren_nayar.h"
 
 namespace candela {
 
 class MatteMaterial : public Material {
  public:
   MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* sigma,
-                const Texture<Float>* bump = nullptr)
-      : Material(bump), kd_(kd), sigma_(sigma) {}
+                const Texture<Float>* bump = nullptr);
   const BSDF* getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const override;
 
  private:
   const Texture<Spectrum>* kd_;
   const Texture<Float>* sigma_;
+  // With constant Kd and sigma the BxDF is the same at every point: made once here and shared by
+  // every BSDF (BxDFs are immutable), instead of two texture lookups and an arena BxDF per hit.
+  // constant_ with neither set: Kd is black, no component.
+  bool constant_ = false;
+  std::unique_ptr<const LambertianReflection> constantLambertian_;
+  std::unique_ptr<const OrenNayar> constantOrenNayar_;
 };
 
 }  // namespace candela

@@ -7,7 +7,7 @@
 namespace candela {
 
 const BSDF* MetalMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
   const Fresnel* fresnel = arena.make<FresnelConductor>(eta_->evaluate(si), k_->evaluate(si));

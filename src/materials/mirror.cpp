@@ -5,7 +5,7 @@
 namespace candela {
 
 const BSDF* MirrorMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
   Spectrum r = clampSpectrum(kr_->evaluate(si));

@@ -8,7 +8,7 @@ namespace candela {
 Float blinnExponent(Float roughness) { return 1 / std::max(roughness, Float(1e-5)); }
 
 const BSDF* PlasticMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
   Spectrum kd = clampSpectrum(kd_->evaluate(si));

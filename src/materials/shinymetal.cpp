@@ -7,7 +7,7 @@
 namespace candela {
 
 const BSDF* ShinyMetalMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
   Spectrum ks = clampSpectrum(ks_->evaluate(si)), kr = clampSpectrum(kr_->evaluate(si));

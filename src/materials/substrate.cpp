@@ -6,7 +6,7 @@
 namespace candela {
 
 const BSDF* SubstrateMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si);
   Spectrum kd = clampSpectrum(kd_->evaluate(si)), ks = clampSpectrum(ks_->evaluate(si));

@@ -20,7 +20,7 @@ const BSDF* specularBoundary(const SurfaceInteraction& si, const Texture<Spectru
 }  // namespace
 
 const BSDF* SubsurfaceMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   return specularBoundary(shadingPoint(si0, &bumped), *kr_, eta_, arena);
 }
 
@@ -30,7 +30,7 @@ BSSRDFCoefficients SubsurfaceMaterial::coefficients(const SurfaceInteraction& si
 }
 
 const BSDF* KdSubsurfaceMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   return specularBoundary(shadingPoint(si0, &bumped), *kr_, eta_, arena);
 }
 

@@ -8,7 +8,7 @@
 namespace candela {
 
 const BSDF* TranslucentMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   BSDF* bsdf = arena.make<BSDF>(si, index_);
   Spectrum r = clampSpectrum(reflect_->evaluate(si)), t = clampSpectrum(transmit_->evaluate(si));

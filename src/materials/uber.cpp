@@ -8,7 +8,7 @@
 namespace candela {
 
 const BSDF* UberMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
-  SurfaceInteraction bumped;
+  BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   Spectrum op = clampSpectrum(t_.opacity->evaluate(si), 0, 1);
   Float eta = t_.index->evaluate(si);

@@ -2,18 +2,7 @@
 
 namespace candela {
 
-BSDF::BSDF(const SurfaceInteraction& si, Float eta_) : eta(eta_), ns_(si.shading.n), ng_(si.n) {
-  // Gram-Schmidt dpdu against the shading normal; fall back to any frame when degenerate.
-  Vector3f s = si.shading.dpdu - ns_ * dot(ns_, si.shading.dpdu);
-  if (s.lengthSquared() > 1e-20f && std::isfinite(s.lengthSquared())) {
-    ss_ = normalize(s);
-    ts_ = cross(ns_, ss_);
-  } else {
-    coordinateSystem(ns_, &ss_, &ts_);
-  }
-}
-
-int BSDF::numComponents(int flags) const {
+int BSDF::countMatching(int flags) const {
   int n = 0;
   for (int i = 0; i < count_; ++i)
     if (bxdfs_[i]->matches(flags)) ++n;
@@ -27,11 +16,7 @@ bool models(const BxDF& b, bool reflect) {
 }
 }  // namespace
 
-bool BSDF::reflects(const Vector3f& woW, const Vector3f& wiW) const {
-  return dot(wiW, ng_) * dot(woW, ng_) > 0;
-}
-
-Spectrum BSDF::f(const Vector3f& woW, const Vector3f& wiW, int flags) const {
+Spectrum BSDF::mixtureF(const Vector3f& woW, const Vector3f& wiW, int flags) const {
   Vector3f wi = worldToLocal(wiW), wo = worldToLocal(woW);
   if (wo.z == 0) return Spectrum(0);
   bool reflect = reflects(woW, wiW);
@@ -43,9 +28,9 @@ Spectrum BSDF::f(const Vector3f& woW, const Vector3f& wiW, int flags) const {
   return f;
 }
 
-Spectrum BSDF::sampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point2f& u2, Float* pdf,
-                       int flags, BxDFType* sampledType) const {
-  int matching = numComponents(flags);
+Spectrum BSDF::mixtureSampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point2f& u2,
+                              Float* pdf, int flags, BxDFType* sampledType) const {
+  int matching = countMatching(flags);
   *pdf = 0;
   if (sampledType) *sampledType = BxDFType(0);
   if (matching == 0) return Spectrum(0);
@@ -72,14 +57,14 @@ Spectrum BSDF::sampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point
     // The whole BSDF's value at wi. One component's is what its sampleF returned (its contract),
     // kept only on the side the geometric normal gives the pair, as f() keeps it.
     if (matching > 1)
-      f = this->f(woW, *wiW, flags);
+      f = mixtureF(woW, *wiW, flags);
     else if (!models(*bxdf, reflects(woW, *wiW)))
       f = Spectrum(0);
   }
   return f;
 }
 
-Float BSDF::pdf(const Vector3f& woW, const Vector3f& wiW, int flags) const {
+Float BSDF::mixturePdf(const Vector3f& woW, const Vector3f& wiW, int flags) const {
   Vector3f wo = worldToLocal(woW), wi = worldToLocal(wiW);
   if (wo.z == 0) return 0;
   Float pdf = 0;

@@ -80,17 +80,19 @@ Spectrum rhoStratified(const BxDF& bxdf, const Vector3f& wo, int sqrtSamples, RN
 Spectrum rhoStratified(const BxDF& bxdf, int sqrtSamples, RNG& rng);
 
 // Lambert's perfectly diffuse reflection, f = R / pi, whose reflectance is R in closed form
-// (lrt draft §9.3).
-class LambertianReflection : public BxDF {
+// (lrt draft §9.3). Final, so that a BSDF made of it alone calls it without virtual dispatch.
+class LambertianReflection final : public BxDF {
  public:
   explicit LambertianReflection(const Spectrum& r)
-      : BxDF(BxDFType(kReflection | kDiffuse)), r_(r) {}
-  Spectrum f(const Vector3f&, const Vector3f&) const override { return r_ * kInvPi; }
+      : BxDF(BxDFType(kReflection | kDiffuse)), r_(r), f_(r * kInvPi) {}
+  Spectrum f(const Vector3f&, const Vector3f&) const override { return f_; }
   Spectrum rho(const Vector3f&, std::span<const Point2f>) const override { return r_; }
   Spectrum rho(std::span<const Point2f>, std::span<const Point2f>) const override { return r_; }
+  // f for any pair of directions on its side.
+  const Spectrum& value() const { return f_; }
 
  private:
-  Spectrum r_;
+  Spectrum r_, f_;
 };
 
 }  // namespace candela

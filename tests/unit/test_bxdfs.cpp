@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/memory.h"
+#include "core/rng.h"
 #include "reflection/brdf_to_btdf.h"
 #include "reflection/bsdf.h"
 #include "reflection/fresnel_blend.h"
@@ -204,6 +205,57 @@ TEST(BSDF, SumsReflectancesAndUsesTheGeometricNormal) {
   // The mixture pdf averages over the matching components.
   EXPECT_NEAR(b->pdf(dir(10, 0), dir(20, 0)), 0.5f * std::cos(radians(20)) / kPi, 1e-6f);
   EXPECT_NEAR(b->pdf(dir(10, 0), dir(20, 0), kAllReflection), std::cos(radians(20)) / kPi, 1e-6f);
+}
+
+// A BSDF whose only component was added as a LambertianReflection takes its closed-form path; it
+// must give the general mixture's results bit for bit, for directions on either side of a
+// geometric normal tilted from the shading one, wo in the shading plane, and every flag set.
+TEST(BSDF, LoneLambertianGivesTheMixturesResultsExactly) {
+  SurfaceInteraction si;
+  si.n = Normal3f(0, 0, 1);
+  si.shading.n = normalize(Normal3f(0.3f, 0.1f, 1));
+  si.shading.dpdu = Vector3f(1, 0, 0);
+  MemoryArena arena;
+  const LambertianReflection* lambert =
+      arena.make<LambertianReflection>(Spectrum(0.2f, 0.5f, 0.9f));
+  BSDF* closedForm = arena.make<BSDF>(si);
+  closedForm->add(lambert);
+  BSDF* mixture = arena.make<BSDF>(si);
+  mixture->add(static_cast<const BxDF*>(lambert));
+  RNG rng(11);
+  auto sphere = [&] {
+    Float z = 1 - 2 * rng.uniformFloat(), phi = 2 * kPi * rng.uniformFloat();
+    Float r = std::sqrt(std::max(Float(0), 1 - z * z));
+    return Vector3f(r * std::cos(phi), r * std::sin(phi), z);
+  };
+  Vector3f ns(si.shading.n);
+  Vector3f inShadingPlane(ns.z, 0, -ns.x);  // dot with ns is exactly 0
+  const int flagSets[] = {kAllBxDF,         kAllBxDF & ~kSpecular,   kAllReflection,
+                          kAllTransmission, kReflection | kSpecular, kReflection | kDiffuse};
+  int sampledBoth = 0, reflectedOnlyByShading = 0;
+  for (int i = 0; i < 4000; ++i) {
+    Vector3f wo = i == 0 ? inShadingPlane : sphere(), wi = sphere();
+    Point2f u(rng.uniformFloat(), rng.uniformFloat());
+    for (int flags : flagSets) {
+      EXPECT_EQ(closedForm->numComponents(flags), mixture->numComponents(flags));
+      EXPECT_EQ(closedForm->f(wo, wi, flags), mixture->f(wo, wi, flags));
+      EXPECT_EQ(closedForm->pdf(wo, wi, flags), mixture->pdf(wo, wi, flags));
+      Vector3f wiA(7, 7, 7), wiB(7, 7, 7);
+      Float pdfA = -1, pdfB = -1;
+      BxDFType typeA = kSpecular, typeB = kSpecular;
+      Spectrum fA = closedForm->sampleF(wo, &wiA, 0.5f, u, &pdfA, flags, &typeA);
+      Spectrum fB = mixture->sampleF(wo, &wiB, 0.5f, u, &pdfB, flags, &typeB);
+      ASSERT_EQ(fA, fB) << i << " " << flags;
+      ASSERT_EQ(pdfA, pdfB) << i << " " << flags;
+      ASSERT_EQ(wiA, wiB) << i << " " << flags;
+      ASSERT_EQ(typeA, typeB) << i << " " << flags;
+      sampledBoth += pdfA > 0;
+      reflectedOnlyByShading += pdfA > 0 && fA.isBlack();
+    }
+  }
+  // Both outcomes of Veach's geometric-normal test were exercised.
+  EXPECT_GT(sampledBoth, 1000);
+  EXPECT_GT(reflectedOnlyByShading, 0);
 }
 
 }  // namespace

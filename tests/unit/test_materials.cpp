@@ -104,6 +104,55 @@ TEST(Materials, MatteReflectsKd) {
   EXPECT_FLOAT_EQ(r[2], 0.7f);
 }
 
+// The same value everywhere, but not a ConstantTexture: the material evaluates it per point.
+template <typename T>
+class SameEverywhere : public Texture<T> {
+ public:
+  explicit SameEverywhere(const T& v) : v_(v) {}
+  T evaluate(const SurfaceInteraction&) const override { return v_; }
+
+ private:
+  T v_;
+};
+
+// Matte makes its BxDF once for constant Kd and sigma; the BSDFs must be those it makes per point
+// from textures of the same values, bit for bit (Lambertian, Oren-Nayar, out-of-range values
+// clamped, black).
+TEST(Materials, MatteWithConstantTexturesMatchesPerPointEvaluation) {
+  const Spectrum kds[] = {Spectrum(0.2f, 0.5f, 0.7f), Spectrum(-0.5f, 2, 0.1f), Spectrum(0)};
+  const Float sigmas[] = {0, 20, -3, 120};
+  SurfaceInteraction si = planePoint();
+  MemoryArena arena;
+  for (const Spectrum& kd : kds)
+    for (Float sigma : sigmas) {
+      ConstantTexture<Spectrum> kdConstant(kd);
+      ConstantTexture<Float> sigmaConstant(sigma);
+      SameEverywhere<Spectrum> kdTexture(kd);
+      SameEverywhere<Float> sigmaTexture(sigma);
+      MatteMaterial once(&kdConstant, &sigmaConstant), perPoint(&kdTexture, &sigmaTexture);
+      const BSDF* a = once.getBSDF(si, arena);
+      const BSDF* b = perPoint.getBSDF(si, arena);
+      ASSERT_EQ(a->numComponents(), b->numComponents());
+      for (Float theta : {0.f, 30.f, 80.f, 120.f}) {
+        Vector3f wo = dir(35, 10), wi = dir(theta, 200);
+        EXPECT_EQ(a->f(wo, wi), b->f(wo, wi)) << kd << " " << sigma << " " << theta;
+        EXPECT_EQ(a->pdf(wo, wi), b->pdf(wo, wi)) << kd << " " << sigma << " " << theta;
+      }
+      Vector3f wiA, wiB;
+      Float pdfA = 0, pdfB = 0;
+      Point2f u(0.3f, 0.8f);
+      EXPECT_EQ(a->sampleF(dir(35, 10), &wiA, 0.4f, u, &pdfA),
+                b->sampleF(dir(35, 10), &wiB, 0.4f, u, &pdfB));
+      EXPECT_EQ(pdfA, pdfB);
+      if (pdfA > 0) {
+        EXPECT_EQ(wiA, wiB);
+      }
+    }
+  ConstantTexture<Spectrum> kd(Spectrum(0.5f));
+  ConstantTexture<Float> rough(20);
+  EXPECT_GT(MatteMaterial(&kd, &rough).getBSDF(si, arena)->f(dir(35, 10), dir(60, 0))[0], 0);
+}
+
 TEST(Materials, PlasticAndSubstrateAlbedoAtMostOne) {
   ConstantTexture<Spectrum> white(Spectrum(1));
   ConstantTexture<Float> rough(0.1f), smooth(0.01f), veryRough(1);
