@@ -40,7 +40,8 @@ bool uvSystem(const TriangleMesh& mesh, const int* v, Vector2f* duv02, Vector2f*
 // dp/du and dp/dv from the 2x2 system dp02 = duv02 (dpdu dpdv)^T, dp12 likewise (lrt draft
 // §3.6.2); degenerate (u, v) gives an arbitrary frame around the normal. The default (u, v)
 // (0, 0), (1, 0), (1, 1) solve to p1 - p0 and p2 - p1.
-void positionDerivatives(const TriangleMesh& mesh, const int* v, Vector3f* dpdu, Vector3f* dpdv) {
+inline void positionDerivatives(const TriangleMesh& mesh, const int* v, Vector3f* dpdu,
+                                Vector3f* dpdv) {
   const Point3f &p0 = mesh.p[v[0]], &p1 = mesh.p[v[1]], &p2 = mesh.p[v[2]];
   bool degenerateUV = false;
   if (mesh.uv.empty()) {
@@ -93,7 +94,6 @@ TriangleMesh::TriangleMesh(const Transform& objectToWorld, bool reverseOrientati
     Face& face = faces[i];
     face.n = length > 0 ? Normal3f(c / length) : Normal3f(0, 0, 1);
     face.area = 0.5f * length;
-    positionDerivatives(*this, v, &face.dpdu, &face.dpdv);
   }
 }
 
@@ -300,7 +300,6 @@ void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float 
                                   SurfaceInteraction* out) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
-  const TriangleMesh::Face& face = mesh_->faces[index_];
   const double pd[3][3] = {{p0.x, p0.y, p0.z}, {p1.x, p1.y, p1.z}, {p2.x, p2.y, p2.z}};
   double b[3] = {1 - double(b1In) - double(b2In), b1In, b2In};
   crossingBarycentrics(pd, ray, b);
@@ -322,9 +321,11 @@ void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float 
   Float woLen = wo.length();
   if (woLen > 0) wo = wo / woLen;
   // Built in place: *out may be the caller's reused interaction; every member is written.
+  Vector3f dpdu, dpdv;
+  positionDerivatives(*mesh_, vi, &dpdu, &dpdv);
   SurfaceInteraction& isect =
-      *std::construct_at(out, pHit, pError, uvHit, wo, face.dpdu, face.dpdv, Normal3f(), Normal3f(),
-                         ray.time, orientedNormal(b0, b1, b2));
+      *std::construct_at(out, pHit, pError, uvHit, wo, dpdu, dpdv, Normal3f(), Normal3f(), ray.time,
+                         orientedNormal(b0, b1, b2));
 
   if (mesh_->n.empty() && mesh_->s.empty()) return;
   // Shading frame from interpolated normal and tangent (lrt draft §3.6.3): ss is the tangent
