@@ -18,6 +18,7 @@
 #include "film/output/image_output.h"
 #include "support/reference_agreement.h"
 #include "support/tail_probabilities.h"
+#include "support/temp_dir.h"
 
 namespace candela::test {
 namespace {
@@ -116,8 +117,9 @@ TEST_P(PbrtV3Conformance, AgreesWithPbrtV3sRender) {
   const fs::path reference = kConformanceDir / "refs" / (c.scene + ".exr");
   if (!fs::exists(scene) || !fs::exists(reference))
     GTEST_SKIP() << "no " << scene << " or " << reference << " (../shared is not here)";
-  const fs::path dir = fs::path(testing::TempDir()) / ("conformance-" + c.scene);
-  fs::create_directories(dir);
+  // Named after the test and the process: suites run at once on one machine never share it.
+  TempDir temp("conformance");
+  const fs::path dir = temp.path("");
 
   // Four renders, not two: three degrees of freedom in each block's noise estimate, and half the
   // noise in their mean (support/reference_agreement.h).
@@ -157,7 +159,6 @@ TEST_P(PbrtV3Conformance, AgreesWithPbrtV3sRender) {
             << worst.ratio << ", dof " << worst.degreesOfFreedom << ", "
             << worst.denominatorDegreesOfFreedom << "), " << failed << " of "
             << agreement.regions.size() << " regions differ\n";
-  fs::remove_all(dir);
 }
 
 const char* const kScenes[] = {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -17,9 +18,11 @@ class TempDir {
   // prefix: what the tests are about ("io", "ply"...), for someone looking in /tmp.
   explicit TempDir(const std::string& prefix) {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() /
-           ("candela-" + prefix + "-" + std::string(info->test_suite_name()) + "-" + info->name() +
-            "-" + std::to_string(::getpid()));
+    std::string name = "candela-" + prefix + "-" + info->test_suite_name() + "-" + info->name() +
+                       "-" + std::to_string(::getpid());
+    // Parameterised tests' names hold slashes ("Long/Suite", "Test/param"): one directory.
+    std::replace(name.begin(), name.end(), '/', '_');
+    dir_ = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
