@@ -36,6 +36,11 @@ TEST(QuadricBoundingBall, NeverRejectsARayAimedAtTheSurface) {
     for (const Placement& place : placements()) {
       std::unique_ptr<Quadric> shape = m.make(place.t, false);
       Float size = Float(m.size) * maxComponent(abs(place.t(Vector3f(1, 1, 1))));
+      // The crossing must stay well inside the sampled part of the surface, whose margin is set
+      // by the transform's smallest stretch.
+      Float window = Float(0.02 * m.size) * std::min({place.t(Vector3f(1, 0, 0)).length(),
+                                                      place.t(Vector3f(0, 1, 0)).length(),
+                                                      place.t(Vector3f(0, 0, 1)).length()});
       int misses = 0, rays = 0;
       for (int i = 0; i < 400; ++i) {
         // A point away from the shape's edges, moved behind the surface by more than its
@@ -47,17 +52,23 @@ TEST(QuadricBoundingBall, NeverRejectsARayAimedAtTheSurface) {
         Float depth = Float(1e-4) * size + 4 * maxComponent(target.pError);
         Point3f aim = target.p - n * depth;
         // From the front, at angles to the normal down to grazing (cosine 0.01) where the
-        // crossing stays within 2 % of the size of the point, from 1e-2 to 1e4 sizes away.
+        // crossing stays within the window of the point.
         coordinateSystem(n, &s, &t);
-        Float cosMin = std::max(Float(0.01), depth / (Float(0.02) * size));
+        Float cosMin = std::max(Float(0.01), depth / window);
         if (cosMin >= 1) continue;
         Float cosTheta = cosMin + (1 - cosMin) * rng.uniformFloat();
         Float sinTheta = std::sqrt(1 - cosTheta * cosTheta), phi = 2 * kPi * rng.uniformFloat();
         Vector3f back =
             s * (sinTheta * std::cos(phi)) + t * (sinTheta * std::sin(phi)) + n * cosTheta;
-        // (Nearer than 1e4 rounding errors, a root is where the ray may start: not a hit.)
-        Float distance = std::max(size * std::pow(Float(10), -2 + 6 * rng.uniformFloat()),
-                                  Float(1e4) * maxComponent(target.pError));
+        // From 1e-2 to 1e4 sizes away, but not nearer than 1e4 of the point's rounding errors (a
+        // root there is where the ray may start, not a hit), and not so far that the origin's
+        // own rounding (a float step at its largest coordinate) moves the ray by a quarter of the
+        // depth: then it may pass in front of the surface.
+        Float nearest = std::max(Float(1e-2) * size, Float(1e4) * maxComponent(target.pError));
+        Float farthest = std::min(Float(1e4) * size, Float(0.25) * depth * Float(0x1p23) -
+                                                         maxComponent(abs(Vector3f(aim))));
+        if (!(farthest > nearest)) continue;
+        Float distance = nearest * std::pow(farthest / nearest, rng.uniformFloat());
         Point3f origin = aim + back * distance;
         ++rays;
         if (!shape->intersectP(Ray(origin, aim - origin, 1 + Float(1e-3)))) ++misses;
