@@ -156,10 +156,10 @@ bool Quadric::passesBall(const Ray& r) const {
 bool Quadric::findHit(const Ray& r, Hit* hit) const {
   // Zero-area shapes (zmin = zmax, ...) have no tangent plane to report: they are never hit.
   if (!invertible_ || !(objectArea_ > 0) || std::isnan(r.tMax)) return false;
-  // To object space in double, with the bound of that arithmetic's own rounding (the float ray is
-  // exact input).
   // Most rays a callback is asked about pass the shape by: its bounding ball decides them first.
   if (hasWorldBall_ && passesBall(r)) return false;
+  // To object space in double, with the bound of that arithmetic's own rounding (the float ray is
+  // exact input).
   double o[3], d[3];
   for (int i = 0; i < 3; ++i) {
     const double* m = w2o_[i];

@@ -12,7 +12,6 @@
 // the exact surface, measured by the implicit function's residual.
 #pragma once
 
-#include <limits>
 #include <numbers>
 
 #include "core/paramset.h"
