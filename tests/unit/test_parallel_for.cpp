@@ -38,18 +38,27 @@ TEST(ParallelFor, EveryIndexOnceAndTheWritesAreSeenOnBothSides) {
 // The racy write, in a function of its own so that the report names it.
 [[gnu::noinline]] void addToSharedSum(long* sum, int v) { *sum += v; }
 
-// Two bodies, held until both have started (relaxed atomics: no order between them), then both
-// write `sum`. The child process reports the race and exits with ThreadSanitizer's status 66.
+// Two bodies, held until both have started, then both write `sum`: the first, then the second
+// once it sees the first's flag. The flags are relaxed atomics, which give no order between the
+// bodies, so the writes race; the child process reports it and exits with ThreadSanitizer's
+// status 66. The writes come one after the other in time: ThreadSanitizer's check of an access
+// against earlier ones is itself unsynchronised, and two writes at the very same moment went
+// unreported in about one run of 20 (the update was lost and the child exited 0).
 void raceBetweenTwoBodies() {
   tbb::task_arena arena(2);
   std::atomic<int> started{0};
+  std::atomic<bool> firstWrote{false};
   long sum = 0;
+  auto waitFor = [](auto ready) {
+    auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!ready() && std::chrono::steady_clock::now() < giveUp) std::this_thread::yield();
+  };
   parallelFor(arena, 0, 2, [&](int i) {
     started.fetch_add(1, std::memory_order_relaxed);
-    auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    while (started.load(std::memory_order_relaxed) < 2 && std::chrono::steady_clock::now() < giveUp)
-      std::this_thread::yield();
+    waitFor([&] { return started.load(std::memory_order_relaxed) == 2; });
+    if (i == 1) waitFor([&] { return firstWrote.load(std::memory_order_relaxed); });
     addToSharedSum(&sum, i + 1);
+    if (i == 0) firstWrote.store(true, std::memory_order_relaxed);
   });
   std::fprintf(stderr, "sum %ld, %d bodies met\n", sum, started.load());
   std::exit(0);
