@@ -59,13 +59,14 @@ Point2f ProjectiveCamera::rasterToScreen(const Point2f& pRaster) const {
                  sw.pMax.y - pRaster.y * ((sw.pMax.y - sw.pMin.y) / yres));
 }
 
-void ProjectiveCamera::pinholeRay(const Point2f& pRaster, Point3f* o, Vector3f* d) const {
+// The steps of every camera ray, inline: a call cost as much as each one's arithmetic.
+inline void ProjectiveCamera::pinholeRay(const Point2f& pRaster, Point3f* o, Vector3f* d) const {
   *o = Point3f(o0_.x + pRaster.x * oDx_.x, o0_.y + pRaster.y * oDy_.y, 0);
   *d = Vector3f(d0_.x + pRaster.x * dDx_.x, d0_.y + pRaster.y * dDy_.y, 1);
 }
 
-void ProjectiveCamera::lensRay(Point3f o, Vector3f d, const Point2f& uLens, Point3f* origin,
-                               Vector3f* dir, Float* tMax) const {
+inline void ProjectiveCamera::lensRay(Point3f o, Vector3f d, const Point2f& uLens, Point3f* origin,
+                                      Vector3f* dir, Float* tMax) const {
   if (options_.lensRadius > 0) {
     // Thin lens (lrt draft §6.2.3): every ray from the film point through the lens meets the
     // pinhole ray on the plane of focus z = focalDistance (d.z = 1, so t = focalDistance). The
@@ -84,8 +85,8 @@ void ProjectiveCamera::lensRay(Point3f o, Vector3f d, const Point2f& uLens, Poin
   *tMax = (options_.yon - options_.hither) / d.z;
 }
 
-Ray ProjectiveCamera::toWorld(const Transform& cameraToWorld, const Point3f& o, const Vector3f& d,
-                              Float tMax, Float time) {
+inline Ray ProjectiveCamera::toWorld(const Transform& cameraToWorld, const Point3f& o,
+                                     const Vector3f& d, Float tMax, Float time) {
   Vector3f dw = cameraToWorld(d);
   Float len = dw.length();
   return Ray(cameraToWorld(o), dw / len, tMax * len, time);
@@ -119,18 +120,22 @@ RayDifferential ProjectiveCamera::cameraRayDifferential(const CameraSample& samp
   return RayDifferential(main, rx, ry);
 }
 
-// A moving camera takes the ray to world space by the transform at the ray's time (pbrt 2e §6.1);
-// for a still one interpolate() is its one transform.
+// A moving camera takes the ray to world space by the transform at the ray's time (pbrt 2e §6.1).
+// A still one has one transform, used in place: interpolate() would return a copy of it for every
+// ray.
 Float ProjectiveCamera::generateRay(const CameraSample& sample, Ray* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = cameraRay(sample, time, cameraToWorld_.interpolate(time));
+  *ray = cameraToWorld_.isAnimated() ? cameraRay(sample, time, cameraToWorld_.interpolate(time))
+                                     : cameraRay(sample, time, cameraToWorld_.start());
   return 1;
 }
 
 Float ProjectiveCamera::generateRayDifferential(const CameraSample& sample,
                                                 RayDifferential* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = cameraRayDifferential(sample, time, cameraToWorld_.interpolate(time));
+  *ray = cameraToWorld_.isAnimated()
+             ? cameraRayDifferential(sample, time, cameraToWorld_.interpolate(time))
+             : cameraRayDifferential(sample, time, cameraToWorld_.start());
   return 1;
 }
 

@@ -94,23 +94,6 @@ Transform transpose(const Transform& t) {
   return Transform(transpose(t.matrix()), transpose(t.inverseMatrix()));
 }
 
-Point3f Transform::operator()(const Point3f& p) const {
-  const auto& m = m_.m;
-  Float xp = m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3];
-  Float yp = m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3];
-  Float zp = m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3];
-  Float wp = m[3][0] * p.x + m[3][1] * p.y + m[3][2] * p.z + m[3][3];
-  if (wp == 1) return Point3f(xp, yp, zp);
-  return Point3f(xp, yp, zp) / wp;
-}
-
-Vector3f Transform::operator()(const Vector3f& v) const {
-  const auto& m = m_.m;
-  return Vector3f(m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
-                  m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-                  m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z);
-}
-
 Normal3f Transform::operator()(const Normal3f& n) const {
   const auto& mi = mInv_.m;
   return Normal3f(mi[0][0] * n.x + mi[1][0] * n.y + mi[2][0] * n.z,

@@ -35,8 +35,23 @@ class Transform {
   bool swapsHandedness() const;
   Transform operator*(const Transform& t) const;
 
-  Point3f operator()(const Point3f& p) const;
-  Vector3f operator()(const Vector3f& v) const;
+  // Inline: cameras and shapes apply these once or more per ray, where a call costs as much as
+  // the arithmetic.
+  Point3f operator()(const Point3f& p) const {
+    const auto& m = m_.m;
+    Float xp = m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3];
+    Float yp = m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3];
+    Float zp = m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3];
+    Float wp = m[3][0] * p.x + m[3][1] * p.y + m[3][2] * p.z + m[3][3];
+    if (wp == 1) return Point3f(xp, yp, zp);
+    return Point3f(xp, yp, zp) / wp;
+  }
+  Vector3f operator()(const Vector3f& v) const {
+    const auto& m = m_.m;
+    return Vector3f(m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
+                    m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+                    m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z);
+  }
   Normal3f operator()(const Normal3f& n) const;  // by the inverse transpose
   Ray operator()(const Ray& r) const;
   RayDifferential operator()(const RayDifferential& r) const;
