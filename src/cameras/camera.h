@@ -22,6 +22,9 @@ class Camera {
   // Also fills the offset rays one pixel over in x and y. The default calls generateRay three
   // times.
   virtual Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const;
+  // Whether the rays depend on CameraSample::pLens (a pinhole's do not: the renderer then lets the
+  // sampler pass over the lens dimensions without computing them).
+  virtual bool readsLensSample() const { return true; }
   // The times the camera's rays span (prepasses such as photon shooting sample the same).
   virtual Float shutterOpen() const { return 0; }
   virtual Float shutterClose() const { return 0; }

@@ -32,6 +32,7 @@ class ProjectiveCamera : public Camera {
   // Analytic: the x and y rays start from the raster point one pixel over, through the same lens
   // point (pbrt 3e §6.2.3, §6.2.1).
   Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const final;
+  bool readsLensSample() const final { return options_.lensRadius > 0; }
 
   const AnimatedTransform& cameraToWorld() const { return cameraToWorld_; }
   const ProjectiveCameraOptions& projectiveOptions() const { return options_; }

@@ -74,6 +74,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   const Float differentialScale = 1 / std::sqrt(Float(std::max(1, spp)));
   const VolumeIntegrator* volume = scene.volume() ? volumeIntegrator_ : nullptr;
   const bool differentials = scene.needsRayDifferentials() || integrator_.needsRayDifferentials();
+  const bool lens = camera_.readsLensSample();
 
   ProgressReporter progress(int64_t(nx) * ny, "Rendering",
                             ProgressReporter::modeFor(options.quiet));
@@ -107,8 +108,8 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
       // A tile of many samples a pixel takes seconds: an interrupt is noticed per sample.
       throwIfInterrupted();
       sampler->startPixelSample(pixel, s);
-      CameraSample cs = ctx.halton ? getCameraSample(*ctx.halton, pixel, film.filter())
-                                   : getCameraSample(*sampler, pixel, film.filter());
+      CameraSample cs = ctx.halton ? getCameraSample(*ctx.halton, pixel, film.filter(), lens)
+                                   : getCameraSample(*sampler, pixel, film.filter(), lens);
       RayDifferential ray;
       Float rayWeight = 0;
       if (differentials) {

@@ -35,6 +35,9 @@ class HaltonSampler final : public Sampler {
     return pair(c);
   }
   Point2f getPixel2D() override { return pair(0); }
+  // Passes over the next two coordinates, as get2D without computing them (their values do not
+  // depend on whether they were computed).
+  void skip2D() { coordinate_ += 2; }
 
   // The key of the digit permutations of one coordinate in one pixel: coordinate c of sample i
   // there is scrambledRadicalInverse(i, kPrimes[c], coordinateKey(pixel, c, seed)).
@@ -82,6 +85,7 @@ class HaltonSampler final : public Sampler {
 };
 
 // getCameraSample with the sampler's values called directly, not through virtual calls.
-CameraSample getCameraSample(HaltonSampler& sampler, const Point2i& pixel, const Filter& filter);
+CameraSample getCameraSample(HaltonSampler& sampler, const Point2i& pixel, const Filter& filter,
+                             bool lens = true);
 
 }  // namespace candela

@@ -57,8 +57,11 @@ using SamplerWarning = std::function<void(const FileLoc&, const std::string&)>;
 
 // The camera sample for one pixel sample (pbrt 4e §5.2.2): the film position is the pixel centre
 // plus an offset drawn from the filter, whose weight goes with it to the film; then time, then
-// the lens position, in that order of dimensions.
-CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filter& filter);
+// the lens position, in that order of dimensions. Without `lens` the lens dimensions are still
+// taken (the later ones keep their numbers) but pLens is left at (0, 0), for a camera that does
+// not read it; a sampler may then skip computing them.
+CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filter& filter,
+                             bool lens = true);
 
 // The sampler named by a Sampler statement: pbrt-v2's "random", "stratified", "lowdiscrepancy",
 // "halton", "bestcandidate" and "adaptive", and pbrt-v3's "02sequence", "maxmindist" and "sobol".

@@ -136,6 +136,31 @@ TEST(PerspectiveCamera, ThinLensRaysConvergeAtTheFocalDistance) {
   }
 }
 
+// The renderer lets the sampler skip the lens dimensions for a camera that says it does not read
+// them: a pinhole's rays must then be the same for every lens sample, a thin lens's must not.
+TEST(PerspectiveCamera, OnlyAThinLensReadsTheLensSample) {
+  Transform w2c = lookAt(Point3f(0, 0, 0), Point3f(0, 0, 1), Vector3f(0, 1, 0));
+  ParamSet pinholeParams;
+  auto pinhole = makeCamera(pinholeParams, w2c, {64, 48});
+  EXPECT_FALSE(pinhole->readsLensSample());
+  ParamSet lensParams;
+  lensParams.add(test::floats("lensradius", {0.1f}));
+  lensParams.add(test::floats("focaldistance", {3}));
+  auto thinLens = makeCamera(lensParams, w2c, {64, 48});
+  EXPECT_TRUE(thinLens->readsLensSample());
+  CameraSample a = test::cameraSample(10.25f, 40.5f), b = a;
+  a.pLens = Point2f(0, 0);
+  b.pLens = Point2f(0.9f, 0.3f);
+  Ray ra, rb;
+  pinhole->generateRay(a, &ra);
+  pinhole->generateRay(b, &rb);
+  EXPECT_EQ(ra.o, rb.o);
+  EXPECT_EQ(ra.d, rb.d);
+  thinLens->generateRay(a, &ra);
+  thinLens->generateRay(b, &rb);
+  EXPECT_NE(ra.o, rb.o);
+}
+
 TEST(PerspectiveCamera, ClippingPlanesAndShutter) {
   ParamSet ps;
   ps.add(test::floats("hither", {0.5f}));

@@ -9,6 +9,7 @@
 
 #include "filters/box_filter.h"
 #include "filters/gaussian_filter.h"
+#include "samplers/halton_sampler.h"
 #include "samplers/random_sampler.h"
 #include "samplers/sampler.h"
 #include "samplers/stratified_sampler.h"
@@ -183,6 +184,42 @@ TEST(Sampler, CameraSampleLiesWithinTheFilterSupport) {
     EXPECT_LE(std::abs(cs.pFilm.x - 12.5f), 2.f);
     EXPECT_LE(std::abs(cs.pFilm.y - 34.5f), 1.f);
     EXPECT_GT(cs.filterWeight, 0.f);
+  }
+}
+
+// Without the lens, a camera sample has the same film position, weight and time, pLens (0, 0),
+// and the dimensions after it keep their values (the Halton sampler skips computing the lens
+// ones; the others take them and drop them).
+TEST(Sampler, CameraSampleWithoutTheLensLeavesTheOtherDimensionsAlone) {
+  BoxFilter box(Vector2f(0.5f, 0.5f));
+  FileLoc loc{"s.pbrt", 1, 1};
+  for (const char* name : {"halton", "random", "stratified", "sobol"}) {
+    SCOPED_TRACE(name);
+    auto sampler = createSampler(name, ParamSet(), 7, 16, loc);
+    auto* halton = dynamic_cast<HaltonSampler*>(sampler.get());
+    EXPECT_EQ(halton != nullptr, std::string(name) == "halton");
+    for (int i = 0; i < 16; ++i) {
+      Point2i pixel(i % 5, 3 + i);
+      std::vector<Float> after[2];
+      CameraSample cs[2];
+      for (int lens = 0; lens < 2; ++lens) {
+        sampler->startPixelSample(pixel, i);
+        cs[lens] = halton ? getCameraSample(*halton, pixel, box, lens == 1)
+                          : getCameraSample(*sampler, pixel, box, lens == 1);
+        // Past the camera sample, as a path takes them; far enough for the Halton sampler's
+        // coordinates to be keyed past the lens ones.
+        for (int d = 0; d < 12; ++d) {
+          Point2f u = sampler->get2D();
+          after[lens].insert(after[lens].end(), {sampler->get1D(), u.x, u.y});
+        }
+      }
+      EXPECT_EQ(cs[0].pFilm, cs[1].pFilm);
+      EXPECT_EQ(cs[0].time, cs[1].time);
+      EXPECT_EQ(cs[0].filterWeight, cs[1].filterWeight);
+      EXPECT_EQ(cs[0].pLens, Point2f(0, 0));
+      EXPECT_NE(cs[1].pLens, Point2f(0, 0));
+      EXPECT_EQ(after[0], after[1]);
+    }
   }
 }
 
