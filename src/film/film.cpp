@@ -44,8 +44,9 @@ size_t Film::offset(const Point2i& p) const {
 }
 
 void Film::addSample(const Point2i& pixel, const Spectrum& L, Float alpha, Float weight) {
-  // pbrt-v3's per-sample clamp (pbrt 3e §7.9.2): the colour kept, the luminance limited.
-  if (Float y = L.y(); y > maxSampleLuminance_) {
+  // pbrt-v3's per-sample clamp (pbrt 3e §7.9.2): the colour kept, the luminance limited. No
+  // luminance exceeds the default, infinite limit: then it is not computed.
+  if (Float y; maxSampleLuminance_ < kInfinity && (y = L.y()) > maxSampleLuminance_) {
     accumulate(pixel, L * (maxSampleLuminance_ / y), alpha, weight);
     return;
   }
