@@ -64,6 +64,46 @@ class DigitMaps {
   uint64_t key_, offsets_, factors_;
 };
 
+// setKey's table when indices below the count have k > 1 digits, the maps of digit 0 taken: out
+// of line, so that setKey's one-entry case needs no frame for the arrays.
+[[gnu::noinline]] void tabulateDigits(DigitMaps& maps, uint32_t base, int k, uint64_t tailScale,
+                                      uint32_t size, uint64_t* table) {
+  // Digits 1 .. K-1 are the table index's digits 0 .. K-2; the ones from K on are zeros of every
+  // index below the count, scrambled to their offsets.
+  uint32_t a[DigitMaps::kMaxDigits], c[DigitMaps::kMaxDigits];
+  uint64_t weight[DigitMaps::kMaxDigits];
+  maps.next(&a[1], &c[1]);  // k > 1: there is a digit 1
+  for (int i = 2; i < k; ++i) maps.next(&a[i], &c[i]);
+  uint64_t v0 = maps.remainingOffsets(tailScale);
+  // Digit i's weight in V is b^(D-1-i): b^(D-K) for the last tabulated one, times b below.
+  for (int i = k - 1, w = 0; i >= 1; --i, ++w) {
+    weight[i] = w == 0 ? tailScale : weight[i + 1] * base;
+    v0 += c[i] * weight[i];
+  }
+  table[0] = v0;
+  // Entries 1 .. b-1 differ from entry 0 in their lowest digit (digit 1 of n) alone: one entry
+  // per image, with no block to copy (for bases above the count's square root the only level).
+  uint64_t block = std::min<uint64_t>(base, size);
+  uint32_t image = c[1];
+  for (uint64_t q = 1; q < block; ++q) {
+    image += a[1];
+    if (image >= base) image -= base;
+    table[q] = v0 + (uint64_t(image) - c[1]) * weight[1];  // modulo 2^64: may be "negative"
+  }
+  // Indices [d b^j, (d+1) b^j) differ from [0, b^j) only in digit j (digit j + 1 of n).
+  for (int i = 2; i < k; ++i) {
+    image = c[i];
+    for (uint32_t d = 1; d < base && d * block < size; ++d) {
+      image += a[i];
+      if (image >= base) image -= base;
+      uint64_t delta = (uint64_t(image) - c[i]) * weight[i];
+      uint64_t first = d * block, end = std::min<uint64_t>(first + block, size);
+      for (uint64_t q = first; q < end; ++q) table[q] = table[q - first] + delta;
+    }
+    block *= base;
+  }
+}
+
 }  // namespace
 
 Float radicalInverse(uint32_t n, uint32_t base) {
@@ -115,32 +155,12 @@ void FastScrambledRadicalInverse::setKey(uint64_t key, uint64_t* table) {
   maps.next(&a0, &c0);
   lowFactor_ = reciprocal_ * a0;
   lowOffset_ = reciprocal_ * c0;
-  // Digits 1 .. K-1 are the table index's digits 0 .. K-2; the ones from K on are zeros of every
-  // index below the count, scrambled to their offsets.
-  const int k = fastDigits_;
-  uint32_t a[DigitMaps::kMaxDigits], c[DigitMaps::kMaxDigits];
-  uint64_t weight[DigitMaps::kMaxDigits];
-  for (int i = 1; i < k; ++i) maps.next(&a[i], &c[i]);
-  uint64_t v0 = maps.remainingOffsets(tailScale_);
-  // Digit i's weight in V is b^(D-1-i): b^(D-K) for the last tabulated one, times b below.
-  for (int i = k - 1, w = 0; i >= 1; --i, ++w) {
-    weight[i] = w == 0 ? tailScale_ : weight[i + 1] * base_;
-    v0 += c[i] * weight[i];
-  }
-  table[0] = v0;
-  // Indices [d b^j, (d+1) b^j) differ from [0, b^j) only in digit j (digit j + 1 of n).
-  uint64_t block = 1;
-  for (int i = 1; i < k; ++i) {
-    uint32_t image = c[i];
-    for (uint32_t d = 1; d < base_ && d * block < tableSize_; ++d) {
-      image += a[i];
-      if (image >= base_) image -= base_;
-      uint64_t delta = (uint64_t(image) - c[i]) * weight[i];  // modulo 2^64: may be "negative"
-      uint64_t first = d * block, end = std::min<uint64_t>(first + block, tableSize_);
-      for (uint64_t q = first; q < end; ++q) table[q] = table[q - first] + delta;
-    }
-    block *= base_;
-  }
+  // Indices below the count of one digit (a base above the count; most of them): the one entry
+  // is what the digits above the lowest, all zeros, contribute.
+  if (fastDigits_ == 1)
+    table[0] = maps.remainingOffsets(tailScale_);
+  else
+    tabulateDigits(maps, base_, fastDigits_, tailScale_, tableSize_, table);
 }
 
 }  // namespace candela
