@@ -56,17 +56,22 @@ RayDifferential EnvironmentCamera::worldRayDifferential(const Transform& cameraT
                          worldRay(cameraToWorld, Point2f(pRaster.x, pRaster.y + 1), time));
 }
 
-// As for the projective cameras: the transform at the ray's time (pbrt 2e §6.1).
+// As for the projective cameras: the transform at the ray's time (pbrt 2e §6.1), a still camera's
+// one transform used in place rather than copied by interpolate() for every ray.
 Float EnvironmentCamera::generateRay(const CameraSample& sample, Ray* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = worldRay(cameraToWorld_.interpolate(time), sample.pFilm, time);
+  *ray = cameraToWorld_.isAnimated()
+             ? worldRay(cameraToWorld_.interpolate(time), sample.pFilm, time)
+             : worldRay(cameraToWorld_.start(), sample.pFilm, time);
   return 1;
 }
 
 Float EnvironmentCamera::generateRayDifferential(const CameraSample& sample,
                                                  RayDifferential* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = worldRayDifferential(cameraToWorld_.interpolate(time), sample.pFilm, time);
+  *ray = cameraToWorld_.isAnimated()
+             ? worldRayDifferential(cameraToWorld_.interpolate(time), sample.pFilm, time)
+             : worldRayDifferential(cameraToWorld_.start(), sample.pFilm, time);
   return 1;
 }
 

@@ -29,6 +29,8 @@ class EnvironmentCamera final : public Camera {
   Float generateRay(const CameraSample& sample, Ray* ray) const override;
   // The differential rays are the directions one pixel over in x and y, from the same origin.
   Float generateRayDifferential(const CameraSample& sample, RayDifferential* ray) const override;
+  // Every ray leaves the camera's origin: there is no lens.
+  bool readsLensSample() const override { return false; }
 
   const EnvironmentCameraOptions& options() const { return options_; }
   Float shutterOpen() const override { return options_.shutterOpen; }

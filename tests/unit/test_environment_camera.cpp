@@ -105,5 +105,21 @@ TEST(EnvironmentCamera, DifferentialsAreTheNeighbouringPixelsDirections) {
   EXPECT_NEAR(std::acos(dot(rd.d, rd.ryDirection)), M_PI / 50, 1e-4);
 }
 
+// The renderer lets the sampler skip the lens dimensions for this camera: its rays must not
+// depend on them.
+TEST(EnvironmentCamera, ReadsNoLensSample) {
+  auto cam =
+      makeEnv(ParamSet(), lookAt(Point3f(1, 2, 3), Point3f(0, 0, 0), Vector3f(0, 1, 0)), {100, 50});
+  EXPECT_FALSE(cam->readsLensSample());
+  CameraSample a = test::cameraSample(30.5f, 20.25f), b = a;
+  a.pLens = Point2f(0, 0);
+  b.pLens = Point2f(0.7f, 0.2f);
+  Ray ra, rb;
+  cam->generateRay(a, &ra);
+  cam->generateRay(b, &rb);
+  EXPECT_EQ(ra.o, rb.o);
+  EXPECT_EQ(ra.d, rb.d);
+}
+
 }  // namespace
 }  // namespace candela
