@@ -1,9 +1,10 @@
-// Test helpers: componentwise comparison of vectors and points, and a camera sample at a film
-// position.
+// Test helpers: componentwise comparison of vectors and points, a camera sample at a film
+// position, and whether a camera's rays there depend on the lens sample.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include "cameras/camera.h"
 #include "samplers/sampler.h"
 
 namespace candela::test {
@@ -25,6 +26,15 @@ inline CameraSample cameraSample(Float x, Float y, Point2f lens = Point2f(0.5f, 
   s.pLens = lens;
   s.time = time;
   return s;
+}
+
+// Whether the camera's rays through film position (x, y) are the same bits for two lens samples
+// far apart (what the renderer relies on when readsLensSample() is false).
+inline bool rayIgnoresLensSample(const Camera& camera, Float x, Float y) {
+  Ray a, b;
+  camera.generateRay(cameraSample(x, y, Point2f(0, 0)), &a);
+  camera.generateRay(cameraSample(x, y, Point2f(0.9f, 0.3f)), &b);
+  return a.o == b.o && a.d == b.d;
 }
 
 }  // namespace candela::test
