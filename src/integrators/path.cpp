@@ -38,7 +38,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
   const Float lightChoicePdf = scene.lights().empty() ? 0 : 1 / Float(scene.lights().size());
   *alpha = 0;
   for (int bounces = 0;; ++bounces) {
-    SurfaceInteraction isect;
+    // Not zeroed: intersect writes every member on a hit, and a miss ends the path unread.
+    SurfaceInteraction isect(kUninitialized);
     Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
     bool hit = scene.intersect(ray, &isect, ctx.stats);
     // A segment after a bounce crosses the scene's volume (the camera ray's: the renderer's).
