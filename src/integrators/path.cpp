@@ -43,7 +43,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
     bool hit = scene.intersect(ray, &isect, ctx.stats);
     // A segment after a bounce crosses the scene's volume (the camera ray's: the renderer's).
-    if (bounces > 0) beta *= volumeTransmittance(ray, scene, ctx);
+    // (Skipped without a volume, where it is 1 and only costs the multiplications.)
+    if (bounces > 0 && scene.volume()) beta *= volumeTransmittance(ray, scene, ctx);
     if (bounces == 0) {
       *alpha = hit ? 1 : 0;
       *hitDistance = hit ? ray.tMax : kInfinity;
