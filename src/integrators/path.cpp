@@ -91,7 +91,10 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
     specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
     previous = isect;
-    ray = RayDifferential(isect.spawnRay(wi));
+    // The next segment, its differentials off: those left in ray are never read (every reader
+    // tests hasDifferentials), so need no zeroing.
+    static_cast<Ray&>(ray) = isect.spawnRay(wi);
+    ray.hasDifferentials = false;
 
     // Russian roulette: continue with probability tied to the throughput (pbrt 2e §15.3 uses
     // min(0.5, y); the throughput's largest channel wastes less on coloured paths). Not before
