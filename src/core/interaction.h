@@ -18,6 +18,8 @@ struct Interaction {
   Float time = 0;
 
   Interaction() = default;
+  // Geometry left unset (see Uninitialized): only for one that a hit then writes in full.
+  explicit Interaction(Uninitialized u) : p(u), pError(u), n(u), wo(u) {}
   Interaction(const Point3f& p_, const Normal3f& n_, const Vector3f& pError_, const Vector3f& wo_,
               Float time_)
       : p(p_), pError(pError_), n(n_), wo(wo_), time(time_) {}
@@ -55,6 +57,18 @@ struct SurfaceInteraction : Interaction {
   mutable Float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
 
   SurfaceInteraction() = default;
+  // Geometry left unset, the scalars zeroed: for a hit record that Aggregate::intersect writes in
+  // full on a hit and that nothing reads after a miss (the path integrator's per-vertex local).
+  explicit SurfaceInteraction(Uninitialized u)
+      : Interaction(u),
+        uv(u),
+        dpdu(u),
+        dpdv(u),
+        dndu(u),
+        dndv(u),
+        shading{Normal3f(u), Vector3f(u), Vector3f(u), Normal3f(u), Normal3f(u)},
+        dpdx(u),
+        dpdy(u) {}
   // n is normalize(dpdu x dpdv), flipped when flipNormal (ReverseOrientation xor handedness swap).
   SurfaceInteraction(const Point3f& p, const Vector3f& pError, const Point2f& uv,
                      const Vector3f& wo, const Vector3f& dpdu, const Vector3f& dpdv,

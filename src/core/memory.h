@@ -19,11 +19,7 @@ class MemoryArena {
   void* alloc(size_t n) {
     constexpr size_t align = alignof(std::max_align_t);
     n = (n + align - 1) & ~(align - 1);
-    if (offset_ + n > current_.size) {
-      if (current_.ptr) used_.push_back(current_);
-      current_ = takeBlock(std::max(n, blockSize_));
-      offset_ = 0;
-    }
+    if (offset_ + n > current_.size) startBlock(n);
     void* p = current_.ptr + offset_;
     offset_ += n;
     return p;
@@ -50,6 +46,13 @@ class MemoryArena {
     char* ptr = nullptr;
     size_t size = 0;
   };
+  // A fresh current block of at least n bytes. Out of line: inlined, its vector code made every
+  // allocating caller (a BSDF per path vertex) save and restore registers on its common path.
+  [[gnu::noinline]] void startBlock(size_t n) {
+    if (current_.ptr) used_.push_back(current_);
+    current_ = takeBlock(std::max(n, blockSize_));
+    offset_ = 0;
+  }
   Block takeBlock(size_t n) {
     for (size_t i = 0; i < available_.size(); ++i)
       if (available_[i].size >= n) {

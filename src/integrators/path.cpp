@@ -38,11 +38,13 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
   const Float lightChoicePdf = scene.lights().empty() ? 0 : 1 / Float(scene.lights().size());
   *alpha = 0;
   for (int bounces = 0;; ++bounces) {
-    SurfaceInteraction isect;
+    // Not zeroed: intersect writes every member on a hit, and a miss ends the path unread.
+    SurfaceInteraction isect(kUninitialized);
     Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
     bool hit = scene.intersect(ray, &isect, ctx.stats);
     // A segment after a bounce crosses the scene's volume (the camera ray's: the renderer's).
-    if (bounces > 0) beta *= volumeTransmittance(ray, scene, ctx);
+    // (Skipped without a volume, where it is 1 and only costs the multiplications.)
+    if (bounces > 0 && scene.volume()) beta *= volumeTransmittance(ray, scene, ctx);
     if (bounces == 0) {
       *alpha = hit ? 1 : 0;
       *hitDistance = hit ? ray.tMax : kInfinity;
@@ -89,7 +91,10 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
     specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
     previous = isect;
-    ray = RayDifferential(isect.spawnRay(wi));
+    // The next segment, its differentials off: those left in ray are never read (every reader
+    // tests hasDifferentials), so need no zeroing.
+    static_cast<Ray&>(ray) = isect.spawnRay(wi);
+    ray.hasDifferentials = false;
 
     // Russian roulette: continue with probability tied to the throughput (pbrt 2e §15.3 uses
     // min(0.5, y); the throughput's largest channel wastes less on coloured paths). Not before

@@ -7,6 +7,15 @@ Spectrum reflectance(const Spectrum& kd) { return clampSpectrum(kd, 0, kInfinity
 Float slopeDeviation(Float sigma) { return clamp(sigma, 0, 90); }
 }  // namespace
 
+const BSDF* MatteMaterial::constantBSDF(const SurfaceInteraction& si, MemoryArena& arena) const {
+  BSDF* bsdf = arena.make<BSDF>(si);
+  if (constantLambertian_)
+    bsdf->add(constantLambertian_.get());
+  else if (constantOrenNayar_)
+    bsdf->add(constantOrenNayar_.get());
+  return bsdf;
+}
+
 MatteMaterial::MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* sigma,
                              const Texture<Float>* bump)
     : Material(bump), kd_(kd), sigma_(sigma) {
@@ -23,17 +32,16 @@ MatteMaterial::MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* 
     constantOrenNayar_ = std::make_unique<const OrenNayar>(r, s);
 }
 
-const BSDF* MatteMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& arena) const {
+const BSDF* MatteMaterial::getBSDF(const SurfaceInteraction& si, MemoryArena& arena) const {
+  return constant_ && !bumpMap() ? constantBSDF(si, arena) : bumpedOrTexturedBSDF(si, arena);
+}
+
+const BSDF* MatteMaterial::bumpedOrTexturedBSDF(const SurfaceInteraction& si0,
+                                                MemoryArena& arena) const {
   BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
+  if (constant_) return constantBSDF(si, arena);
   BSDF* bsdf = arena.make<BSDF>(si);
-  if (constant_) {
-    if (constantLambertian_)
-      bsdf->add(constantLambertian_.get());
-    else if (constantOrenNayar_)
-      bsdf->add(constantOrenNayar_.get());
-    return bsdf;
-  }
   Spectrum r = reflectance(kd_->evaluate(si));
   Float sigma = slopeDeviation(sigma_->evaluate(si));
   if (r.isBlack()) return bsdf;

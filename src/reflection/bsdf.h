@@ -13,7 +13,7 @@ class BSDF {
  public:
   static constexpr int kMaxBxDFs = 8;
   explicit BSDF(const SurfaceInteraction& si, Float eta_ = 1)
-      : eta(eta_), ns_(si.shading.n), ng_(si.n) {
+      : eta(eta_), ns_(si.shading.n), ss_(kUninitialized), ts_(kUninitialized), ng_(si.n) {
     // Gram-Schmidt dpdu against the shading normal; any frame when degenerate. Inline: made
     // once per path vertex, where the call was a tenth of its cost.
     Vector3f s = si.shading.dpdu - ns_ * dot(ns_, si.shading.dpdu);
