@@ -84,7 +84,13 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
 
     Vector3f wi;
     BxDFType sampledType;
-    Float uComponent = ctx.get1D();
+    // The value that picks a component; a BSDF of one component does not read it (a lone
+    // Lambertian, most vertices), so it is passed over there, not computed.
+    Float uComponent = 0;
+    if (bsdf->numComponents() > 1)
+      uComponent = ctx.get1D();
+    else
+      ctx.skip1D();
     Spectrum f = bsdf->sampleF(isect.wo, &wi, uComponent, ctx.get2D(), &scatteringPdf, kAllBxDF,
                                &sampledType);
     if (f.isBlack() || scatteringPdf == 0) break;

@@ -38,6 +38,7 @@ class HaltonSampler final : public Sampler {
   // Passes over the next two coordinates, as get2D without computing them (their values do not
   // depend on whether they were computed).
   void skip2D() { coordinate_ += 2; }
+  void skip1D() { ++coordinate_; }  // as skip2D, for get1D
 
   // The key of the digit permutations of one coordinate in one pixel: coordinate c of sample i
   // there is scrambledRadicalInverse(i, kPrimes[c], coordinateKey(pixel, c, seed)).

@@ -9,6 +9,7 @@
 
 #include "filters/box_filter.h"
 #include "filters/gaussian_filter.h"
+#include "integrators/integrator.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/random_sampler.h"
 #include "samplers/sampler.h"
@@ -218,6 +219,39 @@ TEST(Sampler, CameraSampleWithoutTheLensLeavesTheOtherDimensionsAlone) {
       EXPECT_EQ(cs[0].filterWeight, cs[1].filterWeight);
       EXPECT_EQ(cs[0].pLens, Point2f(0, 0));
       EXPECT_NE(cs[1].pLens, Point2f(0, 0));
+      EXPECT_EQ(after[0], after[1]);
+    }
+  }
+}
+
+// IntegratorContext::skip1D passes over one value: the values after it are those that follow a
+// value taken with get1D (the Halton sampler skips computing it; the others take and drop it).
+TEST(Sampler, IntegratorContextSkip1DLeavesTheLaterValuesAlone) {
+  FileLoc loc{"s.pbrt", 1, 1};
+  MemoryArena arena;
+  RayStats stats;
+  for (const char* name : {"halton", "random", "stratified", "sobol"}) {
+    SCOPED_TRACE(name);
+    auto sampler = createSampler(name, ParamSet(), 7, 16, loc);
+    IntegratorContext ctx{*sampler, arena, stats};
+    EXPECT_EQ(ctx.halton != nullptr, std::string(name) == "halton");
+    for (int i = 0; i < 16; ++i) {
+      Point2i pixel(i % 5, 3 + i);
+      std::vector<Float> after[2];
+      for (int skip = 0; skip < 2; ++skip) {
+        sampler->startPixelSample(pixel, i);
+        // Values skipped at several depths of a path: each vertex draws (1D, 2D) and then the
+        // 1D value is taken or skipped.
+        for (int d = 0; d < 10; ++d) {
+          Point2f u = ctx.get2D();
+          after[skip].insert(after[skip].end(), {u.x, u.y});
+          if (skip)
+            ctx.skip1D();
+          else
+            ctx.get1D();
+          after[skip].push_back(ctx.get1D());
+        }
+      }
       EXPECT_EQ(after[0], after[1]);
     }
   }
