@@ -167,6 +167,30 @@ TEST(SphereShape, HandednessSwapFlipsNormal) {
   }
 }
 
+// Shape::sampleFrom (the default, here over the sphere's cone sampling): sample(ref, ...) and the
+// direction normalize(p - ref.p), bit for bit.
+TEST(SphereShape, SampleFromGivesSampleAndItsDirection) {
+  SphereShape s(Transform(), false, 1, -1, 1, 360);
+  RNG rng(8);
+  int compared = 0;
+  for (int i = 0; i < 1000; ++i) {
+    Float r = 2 + 3 * rng.uniformFloat();
+    Vector3f dir = sampleUniformSphere(Point2f(rng.uniformFloat(), rng.uniformFloat()));
+    Interaction ref(Point3f(0, 0, 0) + dir * r, 0);
+    Point2f u(rng.uniformFloat(), rng.uniformFloat());
+    Float pdf = -1, pdfFrom = -1;
+    Vector3f wi;
+    Interaction it = s.sample(ref, u, &pdf);
+    Interaction from = s.sampleFrom(ref, u, &pdfFrom, &wi);
+    EXPECT_EQ(it.p, from.p);
+    EXPECT_EQ(pdf, pdfFrom);
+    if (pdfFrom == 0) continue;
+    EXPECT_EQ(wi, normalize(from.p - ref.p));
+    ++compared;
+  }
+  EXPECT_GT(compared, 990);
+}
+
 TEST(SphereShape, AreaSamplingPartialSphere) {
   SphereShape s(rotateX(30), false, 2, -0.5f, 1.5f, 200);
   Transform w2o = inverse(rotateX(30));

@@ -191,6 +191,42 @@ TEST(TriangleShape, SamplingIsUniformOverTheTriangle) {
   EXPECT_NEAR(Float(nearP0) / n, 0.25f, 0.01f);
 }
 
+// sampleFrom is sample(ref, ...) with the unit direction to the point: the same point and density,
+// and the direction bit for bit normalize(p - ref.p), from the distance the density was converted
+// with; no density (and no direction owed) for a reference point on the sampled point.
+TEST(TriangleShape, SampleFromGivesSampleAndItsDirection) {
+  TriangleMesh mesh(Transform(), false, {0, 1, 2}, {{1, 1, 1}, {3, 1, 1}, {1, 2, 3}});
+  TriangleShape tri(&mesh, 0);
+  RNG rng(5);
+  int compared = 0;
+  for (int i = 0; i < 2000; ++i) {
+    Interaction ref(
+        Point3f(4 * rng.uniformFloat() - 1, 4 * rng.uniformFloat() - 1, 4 * rng.uniformFloat() - 1),
+        0);
+    Point2f u(rng.uniformFloat(), rng.uniformFloat());
+    Float pdf = -1, pdfFrom = -1;
+    Vector3f wi(7, 7, 7);
+    Interaction it = tri.sample(ref, u, &pdf);
+    Interaction from = tri.sampleFrom(ref, u, &pdfFrom, &wi);
+    EXPECT_EQ(it.p, from.p);
+    EXPECT_EQ(it.n, from.n);
+    EXPECT_EQ(it.pError, from.pError);
+    EXPECT_EQ(pdf, pdfFrom);
+    if (pdfFrom == 0) continue;
+    EXPECT_EQ(wi, normalize(from.p - ref.p));
+    ++compared;
+  }
+  EXPECT_GT(compared, 1900);
+  // The reference point on the sample itself: density 0.
+  Point2f u(0.25f, 0.5f);
+  Float areaPdf;
+  Interaction onShape = tri.sample(u, &areaPdf);
+  Float pdf = -1;
+  Vector3f wi;
+  tri.sampleFrom(Interaction(onShape.p, 0), u, &pdf, &wi);
+  EXPECT_EQ(pdf, 0);
+}
+
 TEST(TriangleShape, WatertightAlongSharedEdges) {
   // A fan of triangles around a centre vertex; rays aimed exactly at the shared edges and at the
   // centre vertex must never slip through.
