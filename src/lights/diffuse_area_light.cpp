@@ -6,17 +6,12 @@ namespace candela {
 
 Spectrum DiffuseAreaLight::sampleLi(const Interaction& ref, const Point2f& u, Vector3f* wi,
                                     Float* pdf, VisibilityTester* vis) const {
-  Interaction pShape = shape_->sample(ref, u, pdf);
-  Vector3f d = pShape.p - ref.p;
-  if (*pdf == 0 || d.lengthSquared() == 0) {
-    *pdf = 0;
-    return Spectrum(0);
-  }
-  *wi = normalize(d);
-  pShape.time = ref.time;
+  // The point is written where the shadow ray will read it, with the direction the shape found.
+  vis->p1 = shape_->sampleFrom(ref, u, pdf, wi);
+  if (*pdf == 0) return Spectrum(0);
+  vis->p1.time = ref.time;
   vis->p0 = ref;
-  vis->p1 = pShape;
-  return L(pShape, -*wi);
+  return L(vis->p1, -*wi);
 }
 
 }  // namespace candela

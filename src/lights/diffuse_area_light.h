@@ -7,7 +7,8 @@
 
 namespace candela {
 
-class DiffuseAreaLight : public AreaLight {
+// final: its own calls of L (each light sample) are direct, not through the vtable.
+class DiffuseAreaLight final : public AreaLight {
  public:
   DiffuseAreaLight(const Shape* shape, const Spectrum& lEmit, int nSamples, bool twoSided)
       : AreaLight(nSamples), shape_(shape), lEmit_(lEmit), twoSided_(twoSided) {}

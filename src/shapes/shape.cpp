@@ -18,6 +18,17 @@ Interaction Shape::sample(const Interaction& ref, const Point2f& u, Float* pdf) 
   return it;
 }
 
+Interaction Shape::sampleFrom(const Interaction& ref, const Point2f& u, Float* pdf,
+                              Vector3f* wi) const {
+  Interaction it = sample(ref, u, pdf);
+  Vector3f d = it.p - ref.p;
+  if (*pdf == 0 || d.lengthSquared() == 0)
+    *pdf = 0;
+  else
+    *wi = normalize(d);
+  return it;
+}
+
 Float Shape::pdf(const Interaction& ref, const Vector3f& wi) const {
   Ray ray = ref.spawnRay(wi);
   Float tHit;

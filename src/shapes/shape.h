@@ -26,6 +26,11 @@ class Shape {
   // A point as seen from ref; *pdf is with respect to solid angle at ref. The default converts the
   // area sample; shapes that can do better (the sphere's cone) override.
   virtual Interaction sample(const Interaction& ref, const Point2f& u, Float* pdf) const;
+  // sample(ref, u, pdf) and the unit direction wi from ref to the point (set when *pdf is not 0),
+  // which a light needs and a shape that converts the density has already found. The default
+  // normalises the point's offset from ref.
+  virtual Interaction sampleFrom(const Interaction& ref, const Point2f& u, Float* pdf,
+                                 Vector3f* wi) const;
   // Solid-angle density at ref of sample(ref, ...) producing direction wi.
   virtual Float pdf(const Interaction& ref, const Vector3f& wi) const;
   // The triangle mesh and triangle index when this shape is a triangle of a mesh, which the

@@ -365,26 +365,8 @@ Float TriangleShape::area() const {
   return 0.5f * cross(p1 - p0, p2 - p0).length();
 }
 
-Interaction TriangleShape::sample(const Point2f& u, Float* pdf) const {
-  Float area;
-  Interaction it = sampleArea(u, &area);
-  *pdf = area > 0 ? 1 / area : 0;
-  return it;
-}
-
-Interaction TriangleShape::sample(const Interaction& ref, const Point2f& u, Float* pdf) const {
-  Float area;
-  Interaction it = sampleArea(u, &area);
-  // Area density to solid angle, as Shape::sample.
-  Vector3f wi = it.p - ref.p;
-  Float dist2 = wi.lengthSquared();
-  Float cosTheta = dist2 > 0 ? absDot(it.n, wi) / std::sqrt(dist2) : 0;
-  *pdf = cosTheta > 0 && area > 0 ? dist2 / (cosTheta * area) : 0;
-  if (std::isinf(*pdf)) *pdf = 0;
-  return it;
-}
-
-Interaction TriangleShape::sampleArea(const Point2f& u, Float* area) const {
+// Inline: both samples are this and little more.
+inline Interaction TriangleShape::sampleArea(const Point2f& u, Float* area) const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
   Point2f b = sampleUniformTriangle(u);
@@ -393,6 +375,33 @@ Interaction TriangleShape::sampleArea(const Point2f& u, Float* area) const {
   Vector3f pError = (absWeighted(b.x, p0) + absWeighted(b.y, p1) + absWeighted(b2, p2)) * gamma(6);
   Normal3f n = orientedNormal(b.x, b.y, b2, area);
   return Interaction(p, n, pError, Vector3f(), 0);
+}
+
+Interaction TriangleShape::sample(const Point2f& u, Float* pdf) const {
+  Float area;
+  Interaction it = sampleArea(u, &area);
+  *pdf = area > 0 ? 1 / area : 0;
+  return it;
+}
+
+Interaction TriangleShape::sample(const Interaction& ref, const Point2f& u, Float* pdf) const {
+  Vector3f wi;
+  return sampleFrom(ref, u, pdf, &wi);
+}
+
+Interaction TriangleShape::sampleFrom(const Interaction& ref, const Point2f& u, Float* pdf,
+                                      Vector3f* wi) const {
+  Float area;
+  Interaction it = sampleArea(u, &area);
+  // Area density to solid angle, as Shape::sample; the distance that converts it also makes the
+  // unit direction (Shape::sampleFrom's, bit for bit).
+  Vector3f d = it.p - ref.p;
+  Float dist2 = d.lengthSquared(), dist = std::sqrt(dist2);
+  Float cosTheta = dist2 > 0 ? absDot(it.n, d) / dist : 0;
+  *pdf = cosTheta > 0 && area > 0 ? dist2 / (cosTheta * area) : 0;
+  if (std::isinf(*pdf)) *pdf = 0;
+  if (*pdf != 0) *wi = d / dist;
+  return it;
 }
 
 Float TriangleShape::pdf(const Interaction& ref, const Vector3f& wi) const {

@@ -73,6 +73,9 @@ class TriangleShape : public Shape {
   Interaction sample(const Point2f& u, Float* pdf) const override;
   // Shape::sample(ref, ...)'s point and density, from one cross product for normal and area.
   Interaction sample(const Interaction& ref, const Point2f& u, Float* pdf) const override;
+  // The same with the unit direction, from the distance the density was converted with.
+  Interaction sampleFrom(const Interaction& ref, const Point2f& u, Float* pdf,
+                         Vector3f* wi) const override;
   // Shape::pdf's density, from the triangle test alone (no interaction is made).
   Float pdf(const Interaction& ref, const Vector3f& wi) const override;
   const TriangleMesh* triangleMesh(int* triangleIndex) const override {

@@ -8,6 +8,7 @@
 #include "support/geometry_expect.h"
 #include "support/param_items.h"
 #include "support/random_geometry.h"
+#include "support/shape_sample_expect.h"
 
 namespace candela {
 namespace {
@@ -165,6 +166,22 @@ TEST(SphereShape, HandednessSwapFlipsNormal) {
     Interaction it = s.sample(Point2f(0.7f, 0.2f), &pdf);
     EXPECT_NEAR(dot(it.n, normalize(Vector3f(it.p))), reverse ? -1 : 1, 1e-4f);
   }
+}
+
+// Shape::sampleFrom (the default, here over the sphere's cone sampling): sample(ref, ...) and the
+// direction normalize(p - ref.p), bit for bit.
+TEST(SphereShape, SampleFromGivesSampleAndItsDirection) {
+  SphereShape s(Transform(), false, 1, -1, 1, 360);
+  RNG rng(8);
+  int compared = 0;
+  for (int i = 0; i < 1000; ++i) {
+    Float r = 2 + 3 * rng.uniformFloat();
+    Vector3f dir = sampleUniformSphere(Point2f(rng.uniformFloat(), rng.uniformFloat()));
+    Interaction ref(Point3f(0, 0, 0) + dir * r, 0);
+    if (test::expectSampleFromIsSample(s, ref, Point2f(rng.uniformFloat(), rng.uniformFloat())))
+      ++compared;
+  }
+  EXPECT_GT(compared, 990);
 }
 
 TEST(SphereShape, AreaSamplingPartialSphere) {

@@ -10,6 +10,7 @@
 #include "shapes/triangle_mesh.h"
 #include "support/geometry_expect.h"
 #include "support/param_items.h"
+#include "support/shape_sample_expect.h"
 
 namespace candela {
 namespace {
@@ -189,6 +190,32 @@ TEST(TriangleShape, SamplingIsUniformOverTheTriangle) {
     if (a + b < 0.5f) ++nearP0;
   }
   EXPECT_NEAR(Float(nearP0) / n, 0.25f, 0.01f);
+}
+
+// sampleFrom is sample(ref, ...) with the unit direction to the point: the same point and density,
+// and the direction bit for bit normalize(p - ref.p), from the distance the density was converted
+// with; no density (and no direction owed) for a reference point on the sampled point.
+TEST(TriangleShape, SampleFromGivesSampleAndItsDirection) {
+  TriangleMesh mesh(Transform(), false, {0, 1, 2}, {{1, 1, 1}, {3, 1, 1}, {1, 2, 3}});
+  TriangleShape tri(&mesh, 0);
+  RNG rng(5);
+  int compared = 0;
+  for (int i = 0; i < 2000; ++i) {
+    Interaction ref(
+        Point3f(4 * rng.uniformFloat() - 1, 4 * rng.uniformFloat() - 1, 4 * rng.uniformFloat() - 1),
+        0);
+    if (test::expectSampleFromIsSample(tri, ref, Point2f(rng.uniformFloat(), rng.uniformFloat())))
+      ++compared;
+  }
+  EXPECT_GT(compared, 1900);
+  // The reference point on the sample itself: density 0.
+  Point2f u(0.25f, 0.5f);
+  Float areaPdf;
+  Interaction onShape = tri.sample(u, &areaPdf);
+  Float pdf = -1;
+  Vector3f wi;
+  tri.sampleFrom(Interaction(onShape.p, 0), u, &pdf, &wi);
+  EXPECT_EQ(pdf, 0);
 }
 
 TEST(TriangleShape, WatertightAlongSharedEdges) {
