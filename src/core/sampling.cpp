@@ -30,11 +30,6 @@ Vector3f sampleUniformCone(const Point2f& u, Float cosThetaMax) {
   return Vector3f(std::cos(phi) * sinTheta, std::sin(phi) * sinTheta, cosTheta);
 }
 
-Point2f sampleUniformTriangle(const Point2f& u) {
-  Float su0 = std::sqrt(u.x);
-  return Point2f(1 - su0, u.y * su0);
-}
-
 Distribution1D::Distribution1D(std::vector<Float> func)
     : func_(std::move(func)), cdf_(func_.size() + 1) {
   size_t n = func_.size();

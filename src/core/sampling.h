@@ -52,8 +52,11 @@ inline Float cosineHemispherePdf(Float cosTheta) { return cosTheta * kInvPi; }
 // Directions within cosThetaMax of +z, uniform in solid angle.
 Vector3f sampleUniformCone(const Point2f& u, Float cosThetaMax);
 inline Float uniformConePdf(Float cosThetaMax) { return 1 / (2 * kPi * (1 - cosThetaMax)); }
-// Barycentrics (b0, b1) uniform over a triangle.
-Point2f sampleUniformTriangle(const Point2f& u);
+// Barycentrics (b0, b1) uniform over a triangle. Inline: every triangle light sample takes one.
+inline Point2f sampleUniformTriangle(const Point2f& u) {
+  Float su0 = std::sqrt(u.x);
+  return Point2f(1 - su0, u.y * su0);
+}
 
 inline Float balanceHeuristic(int nf, Float fPdf, int ng, Float gPdf) {
   return (nf * fPdf) / (nf * fPdf + ng * gPdf);

@@ -17,7 +17,9 @@ Spectrum sampleLightStrategy(const SurfaceInteraction& it, const BSDF& bsdf, con
                              const Scene& scene, RayStats& stats, IntegratorContext* volume) {
   Vector3f wi;
   Float lightPdf = 0;
-  VisibilityTester vis;
+  // Its ends not zeroed: every light's sampleLi writes both when it returns a sample (a positive
+  // density and some radiance), the only case in which they are read below.
+  VisibilityTester vis{Interaction(kUninitialized), Interaction(kUninitialized)};
   Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
   if (!(lightPdf > 0) || li.isBlack()) return Spectrum(0);
   Spectrum f = bsdf.f(it.wo, wi, kAllBxDF & ~kSpecular) * absDot(wi, bsdf.shadingNormal());
