@@ -60,18 +60,17 @@ RayDifferential EnvironmentCamera::worldRayDifferential(const Transform& cameraT
 // one transform used in place rather than copied by interpolate() for every ray.
 Float EnvironmentCamera::generateRay(const CameraSample& sample, Ray* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = cameraToWorld_.isAnimated()
-             ? worldRay(cameraToWorld_.interpolate(time), sample.pFilm, time)
-             : worldRay(cameraToWorld_.start(), sample.pFilm, time);
+  *ray = cameraToWorld_.withTransformAt(
+      time, [&](const Transform& transform) { return worldRay(transform, sample.pFilm, time); });
   return 1;
 }
 
 Float EnvironmentCamera::generateRayDifferential(const CameraSample& sample,
                                                  RayDifferential* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = cameraToWorld_.isAnimated()
-             ? worldRayDifferential(cameraToWorld_.interpolate(time), sample.pFilm, time)
-             : worldRayDifferential(cameraToWorld_.start(), sample.pFilm, time);
+  *ray = cameraToWorld_.withTransformAt(time, [&](const Transform& transform) {
+    return worldRayDifferential(transform, sample.pFilm, time);
+  });
   return 1;
 }
 

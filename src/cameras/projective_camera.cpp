@@ -125,17 +125,17 @@ RayDifferential ProjectiveCamera::cameraRayDifferential(const CameraSample& samp
 // ray.
 Float ProjectiveCamera::generateRay(const CameraSample& sample, Ray* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = cameraToWorld_.isAnimated() ? cameraRay(sample, time, cameraToWorld_.interpolate(time))
-                                     : cameraRay(sample, time, cameraToWorld_.start());
+  *ray = cameraToWorld_.withTransformAt(
+      time, [&](const Transform& transform) { return cameraRay(sample, time, transform); });
   return 1;
 }
 
 Float ProjectiveCamera::generateRayDifferential(const CameraSample& sample,
                                                 RayDifferential* ray) const {
   Float time = lerp(sample.time, options_.shutterOpen, options_.shutterClose);
-  *ray = cameraToWorld_.isAnimated()
-             ? cameraRayDifferential(sample, time, cameraToWorld_.interpolate(time))
-             : cameraRayDifferential(sample, time, cameraToWorld_.start());
+  *ray = cameraToWorld_.withTransformAt(time, [&](const Transform& transform) {
+    return cameraRayDifferential(sample, time, transform);
+  });
   return 1;
 }
 

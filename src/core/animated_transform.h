@@ -40,6 +40,12 @@ class AnimatedTransform {
   // linearly and R by slerp along the shorter arc. If the keys have opposite handedness, S
   // passes through a singular matrix; at that instant the inverse is not finite (NaN).
   Transform interpolate(Float time) const;
+  // use(the transform at time t): a still one's single transform passed in place, not copied as
+  // interpolate() would copy it (cameras do this per ray).
+  template <typename Use>
+  decltype(auto) withTransformAt(Float time, Use&& use) const {
+    return motion_ ? use(interpolate(time)) : use(start_);
+  }
   // A box containing b under every transform of the interval (see the .cpp for the bound).
   Bounds3f motionBounds(const Bounds3f& b) const;
 

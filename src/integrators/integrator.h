@@ -53,14 +53,7 @@ struct IntegratorContext {
   // The sampler's next values: sampler.get1D() and sampler.get2D().
   Float get1D() { return halton ? halton->get1D() : sampler.get1D(); }
   Point2f get2D() { return halton ? halton->get2D() : sampler.get2D(); }
-  // Passes over the next value, for a caller that would not read it: the Halton sampler without
-  // computing it, any other sampler drawing and dropping it (later values keep their numbers).
-  void skip1D() {
-    if (halton)
-      halton->skip1D();
-    else
-      sampler.get1D();
-  }
+  void skip1D() { halton ? halton->skip1D() : sampler.skip1D(); }  // see Sampler::skip1D
 };
 
 // What preprocess may use from the build besides the scene.

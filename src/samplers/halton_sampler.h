@@ -35,10 +35,10 @@ class HaltonSampler final : public Sampler {
     return pair(c);
   }
   Point2f getPixel2D() override { return pair(0); }
-  // Passes over the next two coordinates, as get2D without computing them (their values do not
-  // depend on whether they were computed).
-  void skip2D() { coordinate_ += 2; }
-  void skip1D() { ++coordinate_; }  // as skip2D, for get1D
+  // The coordinates passed over without being computed (their values do not depend on whether
+  // they were computed).
+  void skip1D() override { ++coordinate_; }
+  void skip2D() override { coordinate_ += 2; }
 
   // The key of the digit permutations of one coordinate in one pixel: coordinate c of sample i
   // there is scrambledRadicalInverse(i, kPrimes[c], coordinateKey(pixel, c, seed)).

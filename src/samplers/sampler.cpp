@@ -7,11 +7,6 @@ namespace candela {
 
 namespace {
 
-// Both leave the lens dimensions behind without a value; only the Halton sampler can do so
-// without computing them.
-void skipLens(Sampler& sampler) { sampler.get2D(); }
-void skipLens(HaltonSampler& sampler) { sampler.skip2D(); }
-
 // For any sampler type: the Halton sampler's overload below calls its values directly.
 template <class S>
 CameraSample cameraSample(S& sampler, const Point2i& pixel, const Filter& filter, bool lens) {
@@ -24,7 +19,7 @@ CameraSample cameraSample(S& sampler, const Point2i& pixel, const Filter& filter
   if (lens)
     cs.pLens = sampler.get2D();
   else
-    skipLens(sampler);
+    sampler.skip2D();
   return cs;
 }
 

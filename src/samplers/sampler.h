@@ -39,6 +39,11 @@ class Sampler {
   virtual void startPixelSample(const Point2i& pixel, int sampleIndex) = 0;
   virtual Float get1D() = 0;
   virtual Point2f get2D() = 0;
+  // Pass over the next values, for a caller that would not read them: the values after them are
+  // those that follow get1D / get2D. By default drawn and dropped; a sampler that can skip the
+  // work overrides (the Halton sampler).
+  virtual void skip1D() { get1D(); }
+  virtual void skip2D() { get2D(); }
   // The position within the pixel (the first dimensions of each sample).
   virtual Point2f getPixel2D() = 0;
 

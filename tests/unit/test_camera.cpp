@@ -136,8 +136,8 @@ TEST(PerspectiveCamera, ThinLensRaysConvergeAtTheFocalDistance) {
   }
 }
 
-// The renderer lets the sampler skip the lens dimensions for a camera that says it does not read
-// them: a pinhole's rays must then be the same for every lens sample, a thin lens's must not.
+// The renderer lets the sampler pass over the lens dimensions for a camera that says it does not
+// read them: a pinhole's rays must then be the same for every lens sample, a thin lens's must not.
 TEST(PerspectiveCamera, OnlyAThinLensReadsTheLensSample) {
   Transform w2c = lookAt(Point3f(0, 0, 0), Point3f(0, 0, 1), Vector3f(0, 1, 0));
   ParamSet pinholeParams;

@@ -105,7 +105,7 @@ TEST(EnvironmentCamera, DifferentialsAreTheNeighbouringPixelsDirections) {
   EXPECT_NEAR(std::acos(dot(rd.d, rd.ryDirection)), M_PI / 50, 1e-4);
 }
 
-// The renderer lets the sampler skip the lens dimensions for this camera: its rays must not
+// The renderer lets the sampler pass over the lens dimensions for this camera: its rays must not
 // depend on them.
 TEST(EnvironmentCamera, ReadsNoLensSample) {
   auto cam =

@@ -238,18 +238,18 @@ TEST(Sampler, IntegratorContextSkip1DLeavesTheLaterValuesAlone) {
     for (int i = 0; i < 16; ++i) {
       Point2i pixel(i % 5, 3 + i);
       std::vector<Float> after[2];
-      for (int skip = 0; skip < 2; ++skip) {
+      for (int passedOver = 0; passedOver < 2; ++passedOver) {
         sampler->startPixelSample(pixel, i);
-        // Values skipped at several depths of a path: each vertex draws (1D, 2D) and then the
-        // 1D value is taken or skipped.
+        // Values passed over at several depths of a path: each vertex draws (1D, 2D) and then
+        // the 1D value is taken or passed over.
         for (int d = 0; d < 10; ++d) {
           Point2f u = ctx.get2D();
-          after[skip].insert(after[skip].end(), {u.x, u.y});
-          if (skip)
+          after[passedOver].insert(after[passedOver].end(), {u.x, u.y});
+          if (passedOver)
             ctx.skip1D();
           else
             ctx.get1D();
-          after[skip].push_back(ctx.get1D());
+          after[passedOver].push_back(ctx.get1D());
         }
       }
       EXPECT_EQ(after[0], after[1]);
