@@ -104,6 +104,17 @@ class SurfaceIntegrator {
   // *alpha is set to 1 when the ray hits a surface and 0 when it escapes.
   virtual Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
                       Float* alpha) const = 0;
+  // Whether Li can start from the camera ray's closest hit found by the renderer (LiFromFirstHit
+  // below); the renderer then traces a pixel's camera rays together, as coherent rays.
+  virtual bool startsFromFirstHit() const { return false; }
+  // Li for a camera ray whose closest hit is known: hit, at distance tHit, or null when the ray
+  // escapes; ray as the camera made it (tMax not shortened). *hit may be changed. By default the
+  // hit is found again.
+  virtual Spectrum LiFromFirstHit(const RayDifferential& ray, SurfaceInteraction* /*hit*/,
+                                  Float /*tHit*/, const Scene& scene, IntegratorContext& ctx,
+                                  Float* alpha) const {
+    return Li(ray, scene, ctx, alpha);
+  }
 };
 
 }  // namespace candela

@@ -15,6 +15,14 @@ Spectrum PathIntegrator::Li(const RayDifferential& ray, const Scene& scene, Inte
   return radiance(ray, scene, ctx, true, alpha, &hitDistance);
 }
 
+Spectrum PathIntegrator::LiFromFirstHit(const RayDifferential& ray, SurfaceInteraction* hit,
+                                        Float tHit, const Scene& scene, IntegratorContext& ctx,
+                                        Float* alpha) const {
+  Float hitDistance;
+  FirstHit first{hit, tHit};
+  return radiance(ray, scene, ctx, true, alpha, &hitDistance, &first);
+}
+
 Spectrum PathIntegrator::scatteredLi(const RayDifferential& ray, const Scene& scene,
                                      IntegratorContext& ctx, Float* hitDistance) const {
   Float alpha;
@@ -28,7 +36,7 @@ Spectrum PathIntegrator::scatteredLi(const RayDifferential& ray, const Scene& sc
 // or after a vertex that sampled no light, counts in full.
 Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene& scene,
                                   IntegratorContext& ctx, bool firstEmission, Float* alpha,
-                                  Float* hitDistance) const {
+                                  Float* hitDistance, const FirstHit* first) const {
   Spectrum l(0), beta(1);
   RayDifferential ray(cameraRay);
   bool specularBounce = false;
@@ -39,9 +47,15 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
   *alpha = 0;
   for (int bounces = 0;; ++bounces) {
     // Not zeroed: intersect writes every member on a hit, and a miss ends the path unread.
-    SurfaceInteraction isect(kUninitialized);
+    SurfaceInteraction own(kUninitialized);
     Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
-    bool hit = scene.intersect(ray, &isect, ctx.stats);
+    // The camera ray's hit may be the caller's, found as intersect finds it (used once: a media
+    // interface continues the camera ray at bounces 0 again).
+    const bool given = first != nullptr;
+    bool hit = given ? first->isect != nullptr : scene.intersect(ray, &own, ctx.stats);
+    if (given && hit) ray.tMax = first->t;
+    SurfaceInteraction& isect = given && hit ? *first->isect : own;
+    first = nullptr;
     // A segment after a bounce crosses the scene's volume (the camera ray's: the renderer's).
     // (Skipped without a volume, where it is 1 and only costs the multiplications.)
     if (bounces > 0 && scene.volume()) beta *= volumeTransmittance(ray, scene, ctx);

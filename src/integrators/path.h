@@ -17,6 +17,9 @@ class PathIntegrator : public SurfaceIntegrator {
   int maxDepth() const { return maxDepth_; }
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
+  bool startsFromFirstHit() const override { return true; }
+  Spectrum LiFromFirstHit(const RayDifferential& ray, SurfaceInteraction* hit, Float tHit,
+                          const Scene& scene, IntegratorContext& ctx, Float* alpha) const override;
   // The radiance arriving along ray without the emission of what it meets first (a surface's Le
   // or, when it escapes, the lights' Le): light that has scattered at least once, as an
   // irradiance estimate's rays need it (pbrt 2e §15.5.3). *hitDistance is the ray parameter of
@@ -25,8 +28,14 @@ class PathIntegrator : public SurfaceIntegrator {
                        Float* hitDistance) const;
 
  private:
+  // The first hit when the caller found it: isect, null when the ray escapes, at distance t.
+  struct FirstHit {
+    SurfaceInteraction* isect;
+    Float t;
+  };
   Spectrum radiance(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
-                    bool firstEmission, Float* alpha, Float* hitDistance) const;
+                    bool firstEmission, Float* alpha, Float* hitDistance,
+                    const FirstHit* first = nullptr) const;
   int maxDepth_;
   int rrStartDepth_;
 };

@@ -4,6 +4,7 @@
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 
@@ -26,6 +27,18 @@ struct TileCounters {
 void keepFirst(std::optional<PixelSampleIndex>& first, const std::optional<PixelSampleIndex>& s) {
   if (s && (!first || *s < *first)) first = s;
 }
+
+// The groups of a pixel's samples whose camera rays are traced together: samples [8 g, 8 g + 8),
+// eight for the width of Embree's AVX2 packets.
+constexpr int kCameraGroup = 8;
+struct CameraGroup {
+  std::array<CameraSample, kCameraGroup> cs;
+  std::array<RayDifferential, kCameraGroup> ray;
+  std::array<Float, kCameraGroup> weight;
+  std::array<Ray, kCameraGroup> traced;  // the rays of positive weight, in order
+  std::array<SurfaceInteraction, kCameraGroup> hits;
+  std::array<bool, kCameraGroup> hit;
+};
 }  // namespace
 
 void RenderResult::add(const RenderResult& other) {
@@ -75,6 +88,11 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   const VolumeIntegrator* volume = scene.volume() ? volumeIntegrator_ : nullptr;
   const bool differentials = scene.needsRayDifferentials() || integrator_.needsRayDifferentials();
   const bool lens = camera_.readsLensSample();
+  // An integrator that starts from the camera ray's hit gets its camera rays traced a group of a
+  // pixel's samples at a time, where the aggregate traces such rays faster together (the volume
+  // integrator and adaptive sampling's probe trace their own).
+  const bool groupCameraRays = integrator_.startsFromFirstHit() &&
+                               scene.aggregate().tracesCoherentRaysFaster() && !volume && !adaptive;
 
   ProgressReporter progress(int64_t(nx) * ny, "Rendering",
                             ProgressReporter::modeFor(options.quiet));
@@ -84,9 +102,10 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     TileCounters counters;
     std::unique_ptr<Sampler> sampler;
     std::unique_ptr<MemoryArena> arena;
+    CameraGroup group;
   };
   tbb::enumerable_thread_specific<ThreadState> states([&] {
-    return ThreadState{TileCounters(), sampler_.clone(), std::make_unique<MemoryArena>()};
+    return ThreadState{TileCounters(), sampler_.clone(), std::make_unique<MemoryArena>(), {}};
   });
 
   std::atomic<double> lastTileStart{0};
@@ -103,6 +122,25 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
     int tx = tileIndex % nx, ty = tileIndex / nx;
     int x0 = bounds.pMin.x + tx * tile, y0 = bounds.pMin.y + ty * tile;
     int x1 = std::min(x0 + tile, bounds.pMax.x), y1 = std::min(y0 + tile, bounds.pMax.y);
+    // A sample's radiance, checked and added to the film.
+    auto addToFilm = [&](const Point2i& pixel, int s, const CameraSample& cs,
+                         PixelSampleResult& result, Float alpha) {
+      if (!result.L.isFinite()) {
+        ++c.nonFinite;
+        keepFirst(c.firstNonFinite, PixelSampleIndex{pixel, s});
+        result.L = Spectrum(0);
+      }
+      film.addSample(pixel, result.L, alpha, cs.filterWeight);
+      ++c.samples;
+      arena.reset();
+    };
+    auto cameraRay = [&](const CameraSample& cs, RayDifferential* ray) {
+      ++c.rays.cameraRays;
+      if (!differentials) return camera_.generateRay(cs, ray);
+      Float weight = camera_.generateRayDifferential(cs, ray);
+      ray->scaleDifferentials(differentialScale);
+      return weight;
+    };
     // One sample: traced, added to the film, and reported for adaptive sampling's decision.
     auto takeSample = [&](const Point2i& pixel, int s, bool wantSurface) {
       // A tile of many samples a pixel takes seconds: an interrupt is noticed per sample.
@@ -111,14 +149,7 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
       CameraSample cs = ctx.halton ? getCameraSample(*ctx.halton, pixel, film.filter(), lens)
                                    : getCameraSample(*sampler, pixel, film.filter(), lens);
       RayDifferential ray;
-      Float rayWeight = 0;
-      if (differentials) {
-        rayWeight = camera_.generateRayDifferential(cs, &ray);
-        ray.scaleDifferentials(differentialScale);
-      } else {
-        rayWeight = camera_.generateRay(cs, &ray);
-      }
-      ++c.rays.cameraRays;
+      Float rayWeight = cameraRay(cs, &ray);
       PixelSampleResult result;
       Float alpha = 0;
       // Before Li, which may shorten the camera ray's tMax.
@@ -142,15 +173,48 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
         Spectrum inVolume = volume->Li(segment, scene, ctx, &transmittance);
         result.L = (transmittance * surface + inVolume) * rayWeight;
       }
-      if (!result.L.isFinite()) {
-        ++c.nonFinite;
-        keepFirst(c.firstNonFinite, PixelSampleIndex{pixel, s});
-        result.L = Spectrum(0);
-      }
-      film.addSample(pixel, result.L, alpha, cs.filterWeight);
-      ++c.samples;
-      arena.reset();
+      addToFilm(pixel, s, cs, result, alpha);
       return result;
+    };
+    // Samples [s, e) of a pixel, within one group (below): the group's camera rays traced
+    // together, as coherent rays (Embree's packets), then each path of [s, e) from its camera
+    // ray's hit. Each sample is started again after the group, past its camera sample's
+    // dimensions, so that its values are those takeSample would draw. The whole group is traced
+    // even when a sample range takes part of it: a ray's hit may depend on the rays traced with
+    // it (ties between surfaces), so the group must not depend on the range.
+    auto takeGroup = [&](const Point2i& pixel, int group, int s, int e) {
+      CameraGroup& b = state.group;
+      const int g0 = group * kCameraGroup, n = std::min(spp, g0 + kCameraGroup) - g0;
+      int traced = 0;
+      for (int i = 0; i < n; ++i) {
+        sampler->startPixelSample(pixel, g0 + i);
+        b.cs[i] = ctx.halton ? getCameraSample(*ctx.halton, pixel, film.filter(), lens)
+                             : getCameraSample(*sampler, pixel, film.filter(), lens);
+        b.weight[i] = cameraRay(b.cs[i], &b.ray[i]);
+        if (b.weight[i] > 0) b.traced[traced++] = b.ray[i];
+      }
+      scene.intersectCoherent(std::span<const Ray>(b.traced.data(), size_t(traced)), b.hits.data(),
+                              b.hit.data(), c.rays);
+      for (int i = 0, j = 0; i < n; ++i) {
+        const bool weighted = b.weight[i] > 0;
+        const int k = weighted ? j++ : -1;  // its place among the traced rays
+        if (g0 + i < s || g0 + i >= e) continue;
+        throwIfInterrupted();
+        PixelSampleResult result;
+        Float alpha = 0;
+        if (weighted) {
+          sampler->startPixelSample(pixel, g0 + i);
+          skipCameraSample(*sampler);
+          if (film.aovs() & kAovGeometric)
+            film.addAovSample(pixel, sampleAovs(scene, b.ray[i], arena, c.rays),
+                              b.cs[i].filterWeight);
+          SurfaceInteraction* hit = b.hit[k] ? &b.hits[k] : nullptr;
+          result.L =
+              integrator_.LiFromFirstHit(b.ray[i], hit, b.traced[k].tMax, scene, ctx, &alpha) *
+              b.weight[i];
+        }
+        addToFilm(pixel, g0 + i, b.cs[i], result, alpha);
+      }
     };
     std::vector<PixelSampleResult> initialResults;
     for (int y = y0; y < y1; ++y)
@@ -164,6 +228,12 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
           for (int s = 0; s < initial; ++s) initialResults.push_back(takeSample(pixel, s, true));
           if (sampler->needsMoreSamples(initialResults))
             for (int s = initial; s < spp; ++s) takeSample(pixel, s, false);
+        } else if (groupCameraRays) {
+          for (int s = s0; s < s1;) {
+            int group = s / kCameraGroup, e = std::min(s1, (group + 1) * kCameraGroup);
+            takeGroup(pixel, group, s, e);
+            s = e;
+          }
         } else {
           for (int s = s0; s < s1; ++s) takeSample(pixel, s, false);
         }

@@ -68,6 +68,13 @@ using SamplerWarning = std::function<void(const FileLoc&, const std::string&)>;
 CameraSample getCameraSample(Sampler& sampler, const Point2i& pixel, const Filter& filter,
                              bool lens = true);
 
+// Passes over the dimensions getCameraSample takes after the pixel's (time, lens), for a sample
+// started again after its camera sample was taken: the values after are the same.
+inline void skipCameraSample(Sampler& sampler) {
+  sampler.skip1D();
+  sampler.skip2D();
+}
+
 // The sampler named by a Sampler statement: pbrt-v2's "random", "stratified", "lowdiscrepancy",
 // "halton", "bestcandidate" and "adaptive", and pbrt-v3's "02sequence", "maxmindist" and "sobol".
 // sppOverride > 0 replaces the scene's sample count (the stratified sampler picks xsamples x

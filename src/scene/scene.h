@@ -45,6 +45,12 @@ class Scene {
     ++stats.intersectionRays;
     return aggregate_->intersect(ray, isect);
   }
+  // intersect for each of rays, traced as a batch (Aggregate::intersectCoherent).
+  void intersectCoherent(std::span<const Ray> rays, SurfaceInteraction* isects, bool* hits,
+                         RayStats& stats) const {
+    stats.intersectionRays += rays.size();
+    aggregate_->intersectCoherent(rays, isects, hits);
+  }
   // Whether anything lies along the ray within its tMax (counted as a shadow ray).
   bool intersectP(const Ray& ray, RayStats& stats) const {
     ++stats.shadowRays;

@@ -11,6 +11,7 @@
 #include "core/sampling.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle_mesh.h"
+#include "support/coherent_rays.h"
 #include "support/random_geometry.h"
 #include "support/test_device.h"
 
@@ -94,7 +95,8 @@ struct TwoScenes {
   std::vector<Primitive> flat;
   std::vector<const Primitive*> flatToProto;  // flat[i] is an instance of *flatToProto[i]
 
-  TwoScenes() {
+  // trianglesOnly: the prototypes without their spheres (no user geometry anywhere).
+  explicit TwoScenes(bool trianglesOnly = false) : trianglesOnly_(trianglesOnly) {
     ShapeSpec ground{ShapeSpec::Soup, translate(Vector3f(0, 0, -6)) * scale(4, 4, 0.3f)};
     ground.seed = 77;
     build({ground}, Transform(), &worldShapes, &geometry.primitives);
@@ -103,8 +105,10 @@ struct TwoScenes {
     addPrototype("A", prototypeA(), placementsA());
     addPrototype("B", prototypeB(), placementsB());
   }
-  void addPrototype(const char* name, const std::vector<ShapeSpec>& specs,
+  void addPrototype(const char* name, std::vector<ShapeSpec> specs,
                     const std::vector<Transform>& placements) {
+    if (trianglesOnly_)
+      std::erase_if(specs, [](const ShapeSpec& s) { return s.kind == ShapeSpec::Sphere; });
     auto proto = std::make_unique<InstancePrototype>();
     proto->name = name;
     build(specs, Transform(), &protoShapes, &proto->primitives);
@@ -117,6 +121,7 @@ struct TwoScenes {
     }
     geometry.prototypes.push_back(std::move(proto));
   }
+  bool trianglesOnly_;
 };
 
 TEST(EmbreeInstances, StatsCountInstancesAndSharedPrototypes) {
@@ -186,6 +191,27 @@ TEST(EmbreeInstances, AgreeWithFlattenedShapes) {
   EXPECT_EQ(occMismatch, 0);
   EXPECT_LT(maxP, 1e-3);
   EXPECT_GT(minNormalDot, 0.9999);
+}
+
+// Rays in groups (as a pixel's camera rays) into static instances of triangle prototypes, traced
+// as Embree packets, get the hits intersect gives them one at a time, to the bit; with spheres
+// in the prototypes (user geometry) the rays go one at a time.
+TEST(EmbreeInstances, CoherentRaysGetTheHitsOfSingleRays) {
+  for (bool trianglesOnly : {true, false}) {
+    SCOPED_TRACE(trianglesOnly ? "triangles" : "triangles and spheres");
+    TwoScenes s(trianglesOnly);
+    EmbreeAggregate agg(test::embreeDevice(), s.geometry);
+    EXPECT_EQ(agg.tracesCoherentRaysFaster(), trianglesOnly);
+    test::CoherentFigures f = test::compareCoherent(agg, 4, 4000);
+    std::printf(
+        "[ info ] %ld rays, %ld hits; mismatches: hit %ld, primitive %ld, t %ld, point %ld\n",
+        f.rays, f.hits, f.hitMismatch, f.primMismatch, f.tMismatch, f.pointMismatch);
+    EXPECT_GT(f.hits, f.rays / 5);
+    EXPECT_EQ(f.hitMismatch, 0);
+    EXPECT_EQ(f.primMismatch, 0);
+    EXPECT_EQ(f.tMismatch, 0);
+    EXPECT_EQ(f.pointMismatch, 0);
+  }
 }
 
 // One animated instance of prototype A against, at each of a few times, a static instance under

@@ -257,6 +257,58 @@ TEST(Sampler, IntegratorContextSkip1DLeavesTheLaterValuesAlone) {
   }
 }
 
+// A pixel's camera samples taken first, a group at a time, and each sample then started again
+// past them (skipCameraSample), as the renderer does when it traces camera rays together: every
+// sampler gives the same camera samples and the same values after them as taking one sample at a
+// time.
+TEST(Sampler, SamplesStartedAgainPastTheirCameraSampleKeepTheirValues) {
+  BoxFilter box(Vector2f(0.5f, 0.5f));
+  FileLoc loc{"s.pbrt", 1, 1};
+  for (const char* name : {"random", "stratified", "lowdiscrepancy", "halton", "bestcandidate",
+                           "adaptive", "02sequence", "maxmindist", "sobol"}) {
+    SCOPED_TRACE(name);
+    auto sampler = createSampler(name, ParamSet(), 7, 16, loc);
+    const int spp = sampler->samplesPerPixel();
+    for (int p = 0; p < 6; ++p) {
+      Point2i pixel(p % 4, 2 + 3 * p);
+      std::vector<CameraSample> oneByOne, grouped;
+      std::vector<std::vector<Float>> afterOne, afterGrouped;
+      auto valuesAfter = [&] {
+        std::vector<Float> v;
+        for (int d = 0; d < 12; ++d) {
+          Point2f u = sampler->get2D();
+          v.insert(v.end(), {sampler->get1D(), u.x, u.y});
+        }
+        return v;
+      };
+      for (int i = 0; i < spp; ++i) {
+        sampler->startPixelSample(pixel, i);
+        oneByOne.push_back(getCameraSample(*sampler, pixel, box));
+        afterOne.push_back(valuesAfter());
+      }
+      for (int g = 0; g < spp; g += 8) {
+        const int e = std::min(spp, g + 8);
+        for (int i = g; i < e; ++i) {
+          sampler->startPixelSample(pixel, i);
+          grouped.push_back(getCameraSample(*sampler, pixel, box));
+        }
+        for (int i = g; i < e; ++i) {
+          sampler->startPixelSample(pixel, i);
+          skipCameraSample(*sampler);
+          afterGrouped.push_back(valuesAfter());
+        }
+      }
+      ASSERT_EQ(grouped.size(), oneByOne.size());
+      for (size_t i = 0; i < grouped.size(); ++i) {
+        EXPECT_EQ(grouped[i].pFilm, oneByOne[i].pFilm) << i;
+        EXPECT_EQ(grouped[i].pLens, oneByOne[i].pLens) << i;
+        EXPECT_EQ(grouped[i].time, oneByOne[i].time) << i;
+        EXPECT_EQ(afterGrouped[i], afterOne[i]) << i;
+      }
+    }
+  }
+}
+
 TEST(SamplerFactory, DefaultsAndParameters) {
   FileLoc loc{"s.pbrt", 1, 1};
   auto random = createSampler("random", ParamSet(), 1, 0, loc);

@@ -50,6 +50,8 @@ EmbreeAggregate::EmbreeAggregate(const EmbreeDevice& device, const Primitive* pr
     rtcCommitScene(scene_);
     for (const auto& g : geometries_) acquireOrder(boundsDoneAddress(g.get()));
     device_->check("rtcCommitScene");
+    packetQueries_ = userGeometries_ == 0 && motionGeometries_ == 0;
+    for (const auto& p : prototypes_) packetQueries_ = packetQueries_ && p->packetQueries_;
   } catch (...) {
     rtcReleaseScene(scene_);
     throw;
@@ -232,6 +234,38 @@ inline bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned pri
   return true;
 }
 
+// Inline: every closest hit goes through it.
+inline bool EmbreeAggregate::finishHit(const Ray& ray, const EmbreeHit& hit,
+                                       const QueryContext& context,
+                                       SurfaceInteraction* isect) const {
+  if (hit.instID != RTC_INVALID_GEOMETRY_ID) {
+    // A static instance: the hit is on the prototype's geometry geomID; the interaction is
+    // found in the prototype's space and carried to world space (lrt draft §4.1.2).
+    const EmbreeGeometry& inst = *geometries_[hit.instID];
+    const EmbreeAggregate& proto = *inst.prototype;
+    // The ray as Embree took it into the prototype (the same t means the same point).
+    Transform toLocal = inverse(*inst.instanceToWorld);
+    Ray local(toLocal(ray.o), toLocal(ray.d), ray.tMax, ray.time);
+    if (!proto.interactionAt(*proto.geometries_[hit.geomID], hit.primID, hit.u, hit.v, hit.ng,
+                             hit.t, local, context.shapeRay, isect))
+      return false;
+    *isect = transformSurfaceInteraction(*inst.instanceToWorld, *isect, ray.d);
+  } else if (const EmbreeGeometry& g = *geometries_[hit.geomID];
+             g.kind == EmbreeGeometry::Kind::MotionInstances) {
+    const PrototypeHit& h = *context.motionHit;  // the callback that accepted the hit made it
+    const EmbreeAggregate& proto = *g.motion[hit.primID].prototype;
+    if (!proto.interactionAt(*proto.geometries_[h.geomID], h.primID, h.u, h.v, h.ng, hit.t,
+                             h.localRay, h.shapeRay, isect))
+      return false;
+    *isect = transformSurfaceInteraction(h.instanceToWorld, *isect, ray.d);
+  } else {
+    if (!interactionAt(g, hit.primID, hit.u, hit.v, hit.ng, hit.t, ray, context.shapeRay, isect))
+      return false;
+  }
+  ray.tMax = hit.t;
+  return true;
+}
+
 bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const {
   if (!isTraceable(ray)) return false;
   QueryContext context;
@@ -240,35 +274,54 @@ bool EmbreeAggregate::intersect(const Ray& ray, SurfaceInteraction* isect) const
   rh.hit.geomID = rh.hit.primID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context.rtc, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  EmbreeHit hit{rh.hit.geomID, rh.hit.primID,     rh.hit.instID[0], rh.hit.u,
+                rh.hit.v,      hitNormal(rh.hit), rh.ray.tfar};
+  return finishHit(ray, hit, context, isect);
+}
 
-  float t = rh.ray.tfar;
-  if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
-    // A static instance: the hit is on the prototype's geometry geomID; the interaction is
-    // found in the prototype's space and carried to world space (lrt draft §4.1.2).
-    const EmbreeGeometry& inst = *geometries_[rh.hit.instID[0]];
-    const EmbreeAggregate& proto = *inst.prototype;
-    // The ray as Embree took it into the prototype (the same t means the same point).
-    Transform toLocal = inverse(*inst.instanceToWorld);
-    Ray local(toLocal(ray.o), toLocal(ray.d), ray.tMax, ray.time);
-    if (!proto.interactionAt(*proto.geometries_[rh.hit.geomID], rh.hit.primID, rh.hit.u, rh.hit.v,
-                             hitNormal(rh.hit), t, local, context.shapeRay, isect))
-      return false;
-    *isect = transformSurfaceInteraction(*inst.instanceToWorld, *isect, ray.d);
-  } else if (const EmbreeGeometry& g = *geometries_[rh.hit.geomID];
-             g.kind == EmbreeGeometry::Kind::MotionInstances) {
-    const PrototypeHit& h = *context.motionHit;  // the callback that accepted the hit made it
-    const EmbreeAggregate& proto = *g.motion[rh.hit.primID].prototype;
-    if (!proto.interactionAt(*proto.geometries_[h.geomID], h.primID, h.u, h.v, h.ng, t, h.localRay,
-                             h.shapeRay, isect))
-      return false;
-    *isect = transformSurfaceInteraction(h.instanceToWorld, *isect, ray.d);
-  } else {
-    if (!interactionAt(g, rh.hit.primID, rh.hit.u, rh.hit.v, hitNormal(rh.hit), t, ray,
-                       context.shapeRay, isect))
-      return false;
+void EmbreeAggregate::intersectCoherent(std::span<const Ray> rays, SurfaceInteraction* isects,
+                                        bool* hits) const {
+  // Packets need callbacks that take them: the user geometries' (quadrics, animated instances)
+  // take one ray at a time.
+  if (!packetQueries_) return Aggregate::intersectCoherent(rays, isects, hits);
+  for (size_t first = 0; first < rays.size(); first += 8) {
+    const size_t n = std::min<size_t>(8, rays.size() - first);
+    alignas(32) int valid[8];
+    RTCRayHit8 rh;
+    for (size_t i = 0; i < 8; ++i) {
+      const bool traced = i < n && isTraceable(rays[first + i]);
+      valid[i] = traced ? -1 : 0;
+      RTCRay r;
+      toEmbreeRay(traced ? rays[first + i] : Ray(), &r);
+      rh.ray.org_x[i] = r.org_x;
+      rh.ray.org_y[i] = r.org_y;
+      rh.ray.org_z[i] = r.org_z;
+      rh.ray.dir_x[i] = r.dir_x;
+      rh.ray.dir_y[i] = r.dir_y;
+      rh.ray.dir_z[i] = r.dir_z;
+      rh.ray.tnear[i] = r.tnear;
+      rh.ray.tfar[i] = r.tfar;
+      rh.ray.time[i] = r.time;
+      rh.ray.mask[i] = r.mask;
+      rh.ray.id[i] = r.id;
+      rh.ray.flags[i] = r.flags;
+      rh.hit.geomID[i] = rh.hit.primID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    QueryContext context;
+    context.rtc.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect8(valid, scene_, &context.rtc, &rh);
+    for (size_t i = 0; i < n; ++i) {
+      bool hit = valid[i] && rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+      if (hit) {
+        EmbreeHit h{rh.hit.geomID[i],    rh.hit.primID[i],
+                    rh.hit.instID[0][i], rh.hit.u[i],
+                    rh.hit.v[i],         Vector3f(rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]),
+                    rh.ray.tfar[i]};
+        hit = finishHit(rays[first + i], h, context, &isects[first + i]);
+      }
+      hits[first + i] = hit;
+    }
   }
-  ray.tMax = t;
-  return true;
 }
 
 bool EmbreeAggregate::intersectP(const Ray& ray) const {
