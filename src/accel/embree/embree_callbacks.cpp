@@ -2,7 +2,9 @@
 // their own intersection; animated instances transform the ray into the prototype's space at the
 // ray's time and query the prototype's scene (pbrt 2e §4.1.2, TransformedPrimitive with an
 // AnimatedTransform). Embree may call them with packets of N rays; the aggregate traces single
-// rays only (rtcIntersect1, rtcOccluded1), and the QueryContext notes rely on that.
+// rays only (rtcIntersect1, rtcOccluded1) in a scene that has them (its packets,
+// intersectCoherent, are for scenes without user geometry), and the QueryContext notes rely on
+// that.
 #include "accel/embree/embree_geometry.h"
 
 namespace candela {
