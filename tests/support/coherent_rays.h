@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -60,6 +61,16 @@ inline CoherentFigures compareCoherent(const Aggregate& agg, uint64_t seed, int 
     }
   }
   return f;
+}
+
+// Prints f and expects no mismatch of any kind.
+inline void expectTheSameHits(const CoherentFigures& f) {
+  std::printf("[ info ] %ld rays, %ld hits; mismatches: hit %ld, primitive %ld, t %ld, point %ld\n",
+              f.rays, f.hits, f.hitMismatch, f.primMismatch, f.tMismatch, f.pointMismatch);
+  EXPECT_EQ(f.hitMismatch, 0);
+  EXPECT_EQ(f.primMismatch, 0);
+  EXPECT_EQ(f.tMismatch, 0);
+  EXPECT_EQ(f.pointMismatch, 0);
 }
 
 }  // namespace candela::test
