@@ -8,11 +8,9 @@ Float slopeDeviation(Float sigma) { return clamp(sigma, 0, 90); }
 }  // namespace
 
 const BSDF* MatteMaterial::constantBSDF(const SurfaceInteraction& si, MemoryArena& arena) const {
+  if (constantLambertian_) return arena.make<BSDF>(si, constantLambertian_.get());
   BSDF* bsdf = arena.make<BSDF>(si);
-  if (constantLambertian_)
-    bsdf->add(constantLambertian_.get());
-  else if (constantOrenNayar_)
-    bsdf->add(constantOrenNayar_.get());
+  if (constantOrenNayar_) bsdf->add(constantOrenNayar_.get());
   return bsdf;
 }
 
@@ -41,14 +39,12 @@ const BSDF* MatteMaterial::bumpedOrTexturedBSDF(const SurfaceInteraction& si0,
   BumpedPointStorage bumped;
   const SurfaceInteraction& si = shadingPoint(si0, &bumped);
   if (constant_) return constantBSDF(si, arena);
-  BSDF* bsdf = arena.make<BSDF>(si);
   Spectrum r = reflectance(kd_->evaluate(si));
   Float sigma = slopeDeviation(sigma_->evaluate(si));
-  if (r.isBlack()) return bsdf;
-  if (sigma == 0)
-    bsdf->add(arena.make<LambertianReflection>(r));
-  else
-    bsdf->add(arena.make<OrenNayar>(r, sigma));
+  // A lone Lambertian in the same frame as constantBSDF's, so that both give the same samples.
+  if (!r.isBlack() && sigma == 0) return arena.make<BSDF>(si, arena.make<LambertianReflection>(r));
+  BSDF* bsdf = arena.make<BSDF>(si);
+  if (!r.isBlack()) bsdf->add(arena.make<OrenNayar>(r, sigma));
   return bsdf;
 }
 

@@ -24,6 +24,15 @@ class BSDF {
       coordinateSystem(ns_, &ss_, &ts_);
     }
   }
+  // A BSDF of one Lambertian component, added here and never joined by another: its value,
+  // density and sampled cosines depend on the directions' cosines to the shading normal alone, so
+  // any frame about that normal serves, and the one without a square root or a cross product
+  // (coordinateSystem; Duff et al. 2017) replaces the Gram-Schmidt frame of dp/du above.
+  BSDF(const SurfaceInteraction& si, const LambertianReflection* lone)
+      : eta(1), ns_(si.shading.n), ss_(kUninitialized), ts_(kUninitialized), ng_(si.n) {
+    coordinateSystem(ns_, &ss_, &ts_);
+    add(lone);
+  }
   void add(const BxDF* b) {
     if (count_ < kMaxBxDFs) bxdfs_[count_++] = b;
     lambertian_ = nullptr;

@@ -162,19 +162,19 @@ namespace {
 
 // visualizeweights: the per-strategy images (each strategy's MIS-weighted share) add up to the
 // film's image; visualizestrategies: in the furnace every strategy alone estimates its depth's
-// term Le ρ^d = 0.5^(d+1), with the image mean within 3% (16 x 16, 64 spp).
-std::string furnaceWithVisualisation(const char* flag) {
+// term Le ρ^d = 0.5^(d+1), with the image mean within 3% (16 x 16, spp samples a pixel).
+std::string furnaceWithVisualisation(const char* flag, int spp) {
   return scene(std::string("Integrator \"bdpt\" \"integer maxdepth\" [2] \"bool ") + flag +
                    "\" \"true\"\nPixelFilter \"box\"",
                "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" [60]",
                "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
                "AreaLightSource \"diffuse\" \"rgb L\" [0.5 0.5 0.5]\n"
                "ReverseOrientation\nShape \"sphere\" \"float radius\" [1]\n",
-               16, 64);
+               16, spp);
 }
 
 TEST(BdptVisualisation, WeightedStrategiesAddUpToTheImage) {
-  auto r = test::renderSceneText(furnaceWithVisualisation("visualizeweights"));
+  auto r = test::renderSceneText(furnaceWithVisualisation("visualizeweights", 64));
   std::vector<NamedImage> images = r.job().integrator->extraImages(r.film());
   ASSERT_EQ(images.size(), 2u + 3u + 4u);  // depths 0, 1, 2
   EXPECT_EQ(images.front().name, "bdpt_d00_s00_t02.exr");
@@ -187,8 +187,12 @@ TEST(BdptVisualisation, WeightedStrategiesAddUpToTheImage) {
     }
 }
 
+// Three strategies are random (the image means of the others are exact): at 1,024 spp the standard
+// deviation of their means over seeds 0-11 was 0.6-1.0 % of the expected value, so 3 % is at least
+// 2.9 of them, a false failure about 0.4 % a strategy (two-sided normal). At 64 spp they were
+// 2.2-3.0 %, and 18 of seeds 0-29 failed some strategy.
 TEST(BdptVisualisation, EachStrategyAloneEstimatesItsDepth) {
-  auto r = test::renderSceneText(furnaceWithVisualisation("visualizestrategies"));
+  auto r = test::renderSceneText(furnaceWithVisualisation("visualizestrategies", 1024));
   for (const NamedImage& im : r.job().integrator->extraImages(r.film())) {
     int d = std::stoi(im.name.substr(6, 2));
     double mean = 0;

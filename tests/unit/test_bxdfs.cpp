@@ -258,5 +258,57 @@ TEST(BSDF, LoneLambertianGivesTheMixturesResultsExactly) {
   EXPECT_GT(reflectedOnlyByShading, 0);
 }
 
+// A lone Lambertian made with its own frame (BSDF(si, lambertian)) is the one made with dp/du's
+// frame turned about the shading normal: the same values and densities, and sampled directions at
+// the same angle to the normal and the same density; the frame is orthonormal and right-handed.
+TEST(BSDF, LoneLambertianInItsOwnFrameIsTheSameAboutTheNormal) {
+  RNG rng(23);
+  auto sphere = [&] {
+    Float z = 1 - 2 * rng.uniformFloat(), phi = 2 * kPi * rng.uniformFloat();
+    Float r = std::sqrt(std::max(Float(0), 1 - z * z));
+    return Vector3f(r * std::cos(phi), r * std::sin(phi), z);
+  };
+  MemoryArena arena;
+  const LambertianReflection* lambert =
+      arena.make<LambertianReflection>(Spectrum(0.7f, 0.4f, 0.1f));
+  int sampled = 0;
+  for (int i = 0; i < 2000; ++i) {
+    SurfaceInteraction si;
+    // Normals all round, straight down (the frame's one special case) among them.
+    Vector3f n = i == 0 ? Vector3f(0, 0, -1) : i == 1 ? Vector3f(0, 0, 1) : sphere();
+    si.n = Normal3f(normalize(n + sphere() * Float(0.2)));
+    si.shading.n = Normal3f(n);
+    si.shading.dpdu = sphere();
+    const BSDF* own = arena.make<BSDF>(si, lambert);
+    BSDF* gramSchmidt = arena.make<BSDF>(si);
+    gramSchmidt->add(lambert);
+    ASSERT_EQ(own->numComponents(), 1);
+    Vector3f s = own->localToWorld(Vector3f(1, 0, 0)), t = own->localToWorld(Vector3f(0, 1, 0));
+    EXPECT_NEAR(s.length(), 1, 1e-5f);
+    EXPECT_NEAR(t.length(), 1, 1e-5f);
+    EXPECT_NEAR(dot(s, t), 0, 1e-5f);
+    EXPECT_NEAR(dot(s, n), 0, 1e-5f);
+    EXPECT_NEAR(dot(cross(s, t), n), 1, 1e-5f) << i;
+    Vector3f wo = sphere(), wi = sphere();
+    EXPECT_EQ(own->f(wo, wi), gramSchmidt->f(wo, wi));
+    EXPECT_EQ(own->pdf(wo, wi), gramSchmidt->pdf(wo, wi));
+    Point2f u(rng.uniformFloat(), rng.uniformFloat());
+    Vector3f wiA, wiB;
+    Float pdfA = -1, pdfB = -1;
+    Spectrum fA = own->sampleF(wo, &wiA, 0.5f, u, &pdfA);
+    Spectrum fB = gramSchmidt->sampleF(wo, &wiB, 0.5f, u, &pdfB);
+    EXPECT_EQ(pdfA, pdfB) << i;
+    if (pdfA == 0) continue;
+    ++sampled;
+    EXPECT_NEAR(dot(wiA, n), dot(wiB, n), 1e-5f) << i;
+    EXPECT_NEAR(wiA.length(), 1, 1e-5f);
+    // Each value is its BSDF's for the direction it sampled (the azimuths differ, so the
+    // geometric normal's test may part them).
+    EXPECT_EQ(fA, own->f(wo, wiA)) << i;
+    EXPECT_EQ(fB, gramSchmidt->f(wo, wiB)) << i;
+  }
+  EXPECT_GT(sampled, 1900);
+}
+
 }  // namespace
 }  // namespace candela
