@@ -23,11 +23,16 @@ Spectrum sampleLightStrategy(const SurfaceInteraction& it, const BSDF& bsdf, con
   Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
   if (!(lightPdf > 0) || li.isBlack()) return Spectrum(0);
   Spectrum f = bsdf.f(it.wo, wi, kAllBxDF & ~kSpecular) * absDot(wi, bsdf.shadingNormal());
-  if (f.isBlack() || !scene.unoccluded(vis, stats)) return Spectrum(0);
-  if (volume) li *= volumeTransmittance(vis, scene, *volume);
+  if (f.isBlack()) return Spectrum(0);
+  // The estimate before the shadow ray, which only decides whether it counts: its divisions then
+  // overlap the ray's setup and traversal rather than following them.
   Float pdf = lightPdf / choices;
-  if (light.isDelta()) return f * li / pdf;
-  return f * li * (powerHeuristic(1, pdf, 1, bsdf.pdf(it.wo, wi, bsdfFlags)) / pdf);
+  Spectrum estimate =
+      light.isDelta() ? f * li / pdf
+                      : f * li * (powerHeuristic(1, pdf, 1, bsdf.pdf(it.wo, wi, bsdfFlags)) / pdf);
+  if (!scene.unoccluded(vis, stats)) return Spectrum(0);
+  if (volume) estimate *= volumeTransmittance(vis, scene, *volume);
+  return estimate;
 }
 
 // One sample of each strategy for `light` (pbrt 2e §15.1).
@@ -108,9 +113,15 @@ Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, c
 
 Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
                                    const Scene& scene, IntegratorContext& ctx) {
-  int nLights = int(scene.lights().size());
   Float uChoice = ctx.get1D();
   Point2f uLight = ctx.get2D();
+  return sampleOneLightAgainstBSDF(it, bsdf, scene, ctx, uChoice, uLight);
+}
+
+Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
+                                   const Scene& scene, IntegratorContext& ctx, Float uChoice,
+                                   const Point2f& uLight) {
+  int nLights = int(scene.lights().size());
   if (nLights == 0) return Spectrum(0);
   const Light& light = *scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
   // The density of a direction under the light strategy includes the choice of the light.

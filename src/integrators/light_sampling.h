@@ -27,5 +27,10 @@ Spectrum uniformSampleOneLight(const SurfaceInteraction& it, const BSDF& bsdf, c
 // by the scene's volume.
 Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
                                    const Scene& scene, IntegratorContext& ctx);
+// The same with the light's choice and sample values given (drawn by the caller, in the order
+// the other draws them: the choice, then the sample).
+Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
+                                   const Scene& scene, IntegratorContext& ctx, Float uChoice,
+                                   const Point2f& uLight);
 
 }  // namespace candela

@@ -94,8 +94,14 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     if (bounces == 0) isect.computeDifferentials(ray);
     const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
     bool sampledLight = bsdf->numComponents(kAllBxDF & ~kSpecular) > 0;
-    if (sampledLight) l += beta * sampleOneLightAgainstBSDF(isect, *bsdf, scene, ctx);
-
+    // The sampler's values in the order of a vertex: the light's choice and sample, then the
+    // BSDF's (a heterogeneous volume's march along the shadow segment draws its offset after).
+    Float uChoice = 0;
+    Point2f uLight;
+    if (sampledLight) {
+      uChoice = ctx.get1D();
+      uLight = ctx.get2D();
+    }
     Vector3f wi;
     BxDFType sampledType;
     // The value that picks a component; a BSDF of one component does not read it (a lone
@@ -105,8 +111,12 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
       uComponent = ctx.get1D();
     else
       ctx.skip1D();
+    // The next direction before the light sample, which it does not depend on: its chain of
+    // divisions and series then overlaps the light sample's work rather than following it.
     Spectrum f = bsdf->sampleF(isect.wo, &wi, uComponent, ctx.get2D(), &scatteringPdf, kAllBxDF,
                                &sampledType);
+    if (sampledLight)
+      l += beta * sampleOneLightAgainstBSDF(isect, *bsdf, scene, ctx, uChoice, uLight);
     if (f.isBlack() || scatteringPdf == 0) break;
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
     specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
