@@ -275,19 +275,20 @@ bool TriangleShape::alphaCulls(const Ray& ray, Float b1, Float b2, Float t, bool
 }
 
 // Inline: every hit and light sample needs it.
-inline Normal3f TriangleShape::orientedNormal(Float b0, Float b1, Float b2, Float* area) const {
-  const TriangleMesh::Face& face = mesh_->faces[index_];
+inline Normal3f TriangleShape::orientedNormal(const TriangleMesh& mesh, int index, Float b0,
+                                              Float b1, Float b2, Float* area) {
+  const TriangleMesh::Face& face = mesh.faces[index];
   if (area) *area = face.area;
   const Normal3f& n = face.n;
   // Interpolated normals decide the side (pbrt 3e §3.6.3); otherwise the winding, corrected for
   // mirroring transforms and turned by ReverseOrientation (lrt draft §2.8).
-  if (!mesh_->n.empty()) {
-    const int* vi = v();
-    Normal3f ns = mesh_->n[vi[0]] * b0 + mesh_->n[vi[1]] * b1 + mesh_->n[vi[2]] * b2;
+  if (!mesh.n.empty()) {
+    const int* vi = &mesh.indices[3 * index];
+    Normal3f ns = mesh.n[vi[0]] * b0 + mesh.n[vi[1]] * b1 + mesh.n[vi[2]] * b2;
     if (ns.lengthSquared() > 0) return faceForward(n, Vector3f(ns));
     return n;
   }
-  return mesh_->reverseOrientation != mesh_->transformSwapsHandedness ? -n : n;
+  return mesh.reverseOrientation != mesh.transformSwapsHandedness ? -n : n;
 }
 
 SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1, Float b2, Float t) const {
@@ -296,10 +297,10 @@ SurfaceInteraction TriangleShape::interactionAt(const Ray& ray, Float b1, Float 
   return isect;
 }
 
-void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float /*t*/,
-                                  SurfaceInteraction* out) const {
-  const int* vi = v();
-  const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];
+void TriangleShape::interactionAt(const TriangleMesh& mesh, int index, const Ray& ray, Float b1In,
+                                  Float b2In, SurfaceInteraction* out) {
+  const int* vi = &mesh.indices[3 * index];
+  const Point3f &p0 = mesh.p[vi[0]], &p1 = mesh.p[vi[1]], &p2 = mesh.p[vi[2]];
   const double pd[3][3] = {{p0.x, p0.y, p0.z}, {p1.x, p1.y, p1.z}, {p2.x, p2.y, p2.z}};
   double b[3] = {1 - double(b1In) - double(b2In), b1In, b2In};
   crossingBarycentrics(pd, ray, b);
@@ -314,30 +315,29 @@ void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float 
                Float(b[0] * pd[0][2] + b[1] * pd[1][2] + b[2] * pd[2][2]));
   Vector3f pError = (absWeighted(b0, p0) + absWeighted(b1, p1) + absWeighted(b2, p2)) * gamma(7);
   // The default (u, v) (0, 0), (1, 0), (1, 1) interpolate to (b1 + b2, b2).
-  Point2f uvHit = mesh_->uv.empty()
-                      ? Point2f(b1 + b2, b2)
-                      : mesh_->uv[vi[0]] * b0 + mesh_->uv[vi[1]] * b1 + mesh_->uv[vi[2]] * b2;
+  Point2f uvHit = mesh.uv.empty() ? Point2f(b1 + b2, b2)
+                                  : mesh.uv[vi[0]] * b0 + mesh.uv[vi[1]] * b1 + mesh.uv[vi[2]] * b2;
   Vector3f wo = -ray.d;
   Float woLen = wo.length();
   if (woLen > 0) wo = wo / woLen;
   // Built in place: *out may be the caller's reused interaction; every member is written.
   Vector3f dpdu, dpdv;
-  positionDerivatives(*mesh_, vi, &dpdu, &dpdv);
+  positionDerivatives(mesh, vi, &dpdu, &dpdv);
   SurfaceInteraction& isect =
       *std::construct_at(out, pHit, pError, uvHit, wo, dpdu, dpdv, Normal3f(), Normal3f(), ray.time,
-                         orientedNormal(b0, b1, b2));
+                         orientedNormal(mesh, index, b0, b1, b2));
 
-  if (mesh_->n.empty() && mesh_->s.empty()) return;
+  if (mesh.n.empty() && mesh.s.empty()) return;
   // Shading frame from interpolated normal and tangent (lrt draft §3.6.3): ss is the tangent
   // (or dp/du) made perpendicular to ns, ts completes the frame, so cross(ss, ts) = ns.
   Normal3f ns = isect.n;
-  if (!mesh_->n.empty()) {
-    Normal3f ni = mesh_->n[vi[0]] * b0 + mesh_->n[vi[1]] * b1 + mesh_->n[vi[2]] * b2;
+  if (!mesh.n.empty()) {
+    Normal3f ni = mesh.n[vi[0]] * b0 + mesh.n[vi[1]] * b1 + mesh.n[vi[2]] * b2;
     if (ni.lengthSquared() > 0) ns = normalize(ni);
   }
   Vector3f ss = isect.dpdu;
-  if (!mesh_->s.empty()) {
-    Vector3f si = mesh_->s[vi[0]] * b0 + mesh_->s[vi[1]] * b1 + mesh_->s[vi[2]] * b2;
+  if (!mesh.s.empty()) {
+    Vector3f si = mesh.s[vi[0]] * b0 + mesh.s[vi[1]] * b1 + mesh.s[vi[2]] * b2;
     if (si.lengthSquared() > 0) ss = si;
   }
   Vector3f ts = cross(ns, ss);
@@ -351,8 +351,8 @@ void TriangleShape::interactionAt(const Ray& ray, Float b1In, Float b2In, Float 
   Normal3f dndu, dndv;
   Vector2f duv02, duv12;
   Float invDet;
-  if (!mesh_->n.empty() && uvSystem(*mesh_, vi, &duv02, &duv12, &invDet)) {
-    Normal3f dn1 = mesh_->n[vi[0]] - mesh_->n[vi[2]], dn2 = mesh_->n[vi[1]] - mesh_->n[vi[2]];
+  if (!mesh.n.empty() && uvSystem(mesh, vi, &duv02, &duv12, &invDet)) {
+    Normal3f dn1 = mesh.n[vi[0]] - mesh.n[vi[2]], dn2 = mesh.n[vi[1]] - mesh.n[vi[2]];
     dndu = (dn1 * duv12.y - dn2 * duv02.y) * invDet;
     dndv = (dn2 * duv02.x - dn1 * duv12.x) * invDet;
   }

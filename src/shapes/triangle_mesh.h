@@ -63,7 +63,14 @@ class TriangleShape : public Shape {
   // ray parameter t: as used for the hits Embree reports (its u, v are b1, b2).
   SurfaceInteraction interactionAt(const Ray& ray, Float b1, Float b2, Float t) const;
   // The same, written into *isect.
-  void interactionAt(const Ray& ray, Float b1, Float b2, Float t, SurfaceInteraction* isect) const;
+  void interactionAt(const Ray& ray, Float b1, Float b2, Float /*t*/,
+                     SurfaceInteraction* isect) const {
+    interactionAt(*mesh_, index_, ray, b1, b2, isect);
+  }
+  // The same for triangle `index` of mesh, without its shape: for callers that know the mesh
+  // (Embree's triangle geometries), whose hits then reach the vertices in fewer dependent loads.
+  static void interactionAt(const TriangleMesh& mesh, int index, const Ray& ray, Float b1, Float b2,
+                            SurfaceInteraction* isect);
   // Zero area (collinear or repeated vertices) or a NaN or infinite vertex: never hit.
   bool degenerate() const;
   // Whether the mesh's alpha (shadowAlpha when forShadow) cuts the hit (b1, b2, t) away.
@@ -91,7 +98,11 @@ class TriangleShape : public Shape {
   // The geometric normal for the vertex winding, turned as the mesh says (interpolated normal
   // if any, else ReverseOrientation xor handedness swap); with its area when asked (both from the
   // mesh's faces).
-  Normal3f orientedNormal(Float b0, Float b1, Float b2, Float* area = nullptr) const;
+  Normal3f orientedNormal(Float b0, Float b1, Float b2, Float* area = nullptr) const {
+    return orientedNormal(*mesh_, index_, b0, b1, b2, area);
+  }
+  static Normal3f orientedNormal(const TriangleMesh& mesh, int index, Float b0, Float b1, Float b2,
+                                 Float* area = nullptr);
   const int* v() const { return &mesh_->indices[3 * index_]; }
   // A point uniform by area with its normal, and the area.
   Interaction sampleArea(const Point2f& u, Float* area) const;

@@ -179,6 +179,48 @@ TEST(EmbreeAggregate, AgreesWithBruteForce) {
   EXPECT_EQ(occMismatch, 0);
 }
 
+// A triangle hit's interaction is the hit shape's own, field for field, whether Embree's geometry
+// reaches the vertices through the mesh (a run of triangles in the mesh's order, also one that
+// starts inside the mesh) or through the primitive's shape (a run out of the mesh's order).
+TEST(EmbreeAggregate, TriangleHitsAreTheirShapesInteractions) {
+  TestScene s;
+  const TriangleMesh* m = s.addMesh(terrain(12, Transform()));
+  const int n = m->triangleCount();
+  s.addTriangles(m, n / 3, n);  // in order, from triangle n / 3: through the mesh
+  s.add(std::make_unique<SphereShape>(Transform(), false, 0.1f, -0.1f, 0.1f, 360));
+  for (int i = n / 3 - 1; i >= 0; --i)  // out of order: through the shapes
+    s.add(std::make_unique<TriangleShape>(m, i));
+  EmbreeAggregate agg(test::embreeDevice(), s.primitives);
+  RNG rng(31);
+  int hits[2] = {0, 0};
+  for (int i = 0; i < 20000; ++i) {
+    Ray ray(test::randomPoint(rng, -6, 6) + Vector3f(0, 0, 6),
+            test::randomPoint(rng, -5, 5) - Point3f(0, 0, 6) - Vector3f(0, 0, 2));
+    Ray shapeRay = ray;
+    SurfaceInteraction isect;
+    if (!agg.intersect(ray, &isect)) continue;
+    const auto* tri = dynamic_cast<const TriangleShape*>(isect.primitive->shape);
+    if (!tri) continue;
+    SurfaceInteraction own;
+    Float t;
+    ASSERT_TRUE(tri->intersect(shapeRay, &t, &own)) << i;
+    ++hits[tri->index() < n / 3];
+    ASSERT_EQ(isect.p, own.p) << i;
+    ASSERT_EQ(isect.pError, own.pError) << i;
+    ASSERT_EQ(isect.n, own.n) << i;
+    ASSERT_EQ(isect.uv, own.uv) << i;
+    ASSERT_EQ(isect.wo, own.wo) << i;
+    ASSERT_EQ(isect.dpdu, own.dpdu) << i;
+    ASSERT_EQ(isect.dpdv, own.dpdv) << i;
+    ASSERT_EQ(isect.shading.n, own.shading.n) << i;
+    ASSERT_EQ(isect.shading.dpdu, own.shading.dpdu) << i;
+    ASSERT_EQ(isect.shading.dndu, own.shading.dndu) << i;
+  }
+  std::printf("[ info ] hits through the mesh %d, through the shapes %d\n", hits[0], hits[1]);
+  EXPECT_GT(hits[0], 5000);
+  EXPECT_GT(hits[1], 2000);
+}
+
 TEST(EmbreeAggregate, HitsPointIntoThePrimitiveVector) {
   TestScene s;
   const TriangleMesh* m = s.addMesh(terrain(2, Transform()));

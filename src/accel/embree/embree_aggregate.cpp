@@ -122,11 +122,18 @@ void EmbreeAggregate::addPrimitives(const Primitive* primitives, size_t n) {
     info->kind = EmbreeGeometry::Kind::Triangles;
     info->primitives = primitives;
     std::vector<unsigned> indices;
+    const int firstTriangle = tri;
+    bool inMeshOrder = true;
     for (; i < n; ++i) {
       const Shape* s = primitives[i].shape;
       if (!s || s->triangleMesh(&tri) != mesh || !dynamic_cast<const TriangleShape*>(s)) break;
       for (int k = 0; k < 3; ++k) indices.push_back(unsigned(mesh->indices[3 * tri + k]));
+      inMeshOrder = inMeshOrder && tri == firstTriangle + int(info->primIndex.size());
       info->primIndex.push_back(uint32_t(i));
+    }
+    if (inMeshOrder) {
+      info->mesh = mesh;
+      info->firstTriangle = firstTriangle;
     }
     RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree may read 16 bytes at the last vertex; its own buffers are padded for that.
@@ -225,8 +232,10 @@ inline bool EmbreeAggregate::interactionAt(const EmbreeGeometry& g, unsigned pri
     clipped.tMax = nextFloatUp(t);
     Float tHit;
     if (!prim.shape->intersect(clipped, &tHit, isect)) return false;
-  } else {
+  } else if (g.mesh) {
     // Embree's (u, v) are the barycentrics of vertices 1 and 2.
+    TriangleShape::interactionAt(*g.mesh, g.firstTriangle + int(primID), ray, u, v, isect);
+  } else {
     const auto* tri = static_cast<const TriangleShape*>(prim.shape);
     tri->interactionAt(ray, u, v, t, isect);
   }

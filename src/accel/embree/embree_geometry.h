@@ -16,6 +16,7 @@
 namespace candela {
 
 class EmbreeAggregate;
+struct TriangleMesh;
 
 // Embree's t interval is closed, [tnear, tfar]; ours is open, (0, tMax). The smallest normal
 // float as tnear drops hits at exactly t = 0 (an origin on a triangle's plane: Embree's test
@@ -46,6 +47,10 @@ struct EmbreeGeometry {
   const EmbreeAggregate* prototype = nullptr;  // Instance
   const Transform* instanceToWorld = nullptr;  // Instance; owned by the SceneGeometry
   std::vector<Motion> motion;                  // MotionInstances
+  // Triangles whose primIDs are their mesh's triangles firstTriangle + primID: a hit's vertices
+  // found from the mesh, in fewer dependent loads than through its primitive and shape.
+  const TriangleMesh* mesh = nullptr;
+  int firstTriangle = 0;
 
   const Primitive& primitive(unsigned primID) const { return primitives[primIndex[primID]]; }
 };
