@@ -47,6 +47,10 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
                  "hyperboloid's normal: exact (the fitted surface's) or pbrt (from the p1-p2 "
                  "segment's direction, off the surface where the segment is not a ruling)")
       ->check(CLI::IsMember({"exact", "pbrt"}));
+  app.add_option("--turbulence", o->turbulence,
+                 "wrinkled's octaves dropped by the footprint: mean (their mean, once) or pbrt "
+                 "(0.2 each, the partial octave's counted twice)")
+      ->check(CLI::IsMember({"mean", "pbrt"}));
   app.add_flag("-q,--quiet", o->quiet, "No progress or statistics output");
   app.add_flag("-v,--verbose", o->verbose, "More detail");
   app.add_flag("--stats", o->stats, "Print what the scene built (geometry, Embree, lights...)");

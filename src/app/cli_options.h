@@ -27,6 +27,7 @@ struct CliOptions {
   std::string dialect;                      // "" (detect), "pbrt-v2" or "pbrt-v3": material models
   std::string coatFresnel = "exact";        // plastic's coat: "exact" or "pbrt" (reversed indices)
   std::string hyperboloidNormal = "exact";  // "exact" or "pbrt" (the segment's direction as dp/dv)
+  std::string turbulence = "mean";          // dropped octaves of wrinkled: "mean" or "pbrt"
   std::string compression;                  // "" = the Film's "compression" (default zip)
   std::string aovs;                         // "albedo,normal,..." added to the Film's "aovs"
   std::string ocioConfig, display = "sRGB", view = "Standard";

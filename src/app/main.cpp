@@ -87,6 +87,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.subdiv = cli.subdiv == "opensubdiv" ? LoopProducer::OpenSubdiv : LoopProducer::Book;
   build.hyperboloidNormal =
       cli.hyperboloidNormal == "pbrt" ? HyperboloidNormal::SegmentAsPbrt : HyperboloidNormal::Exact;
+  build.clampedOctaves = cli.turbulence == "pbrt" ? ClampedOctaves::AsPbrt : ClampedOctaves::Mean;
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
   build.materialModels.dialect = parseSceneDialect(cli.dialect);
   build.materialModels.plasticCoat =

@@ -51,6 +51,7 @@ std::string imageOptionsText(const CliOptions& cli, bool half) {
   add("dialect", cli.dialect);
   add("coat-fresnel", cli.coatFresnel);
   add("hyperboloid-normal", cli.hyperboloidNormal);
+  add("turbulence", cli.turbulence);
   add("colorspace", cli.colorSpace);
   add("aov", cli.aovs);
   add("half", half ? "1" : "0");

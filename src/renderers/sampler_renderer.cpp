@@ -84,7 +84,8 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   const int initial = std::clamp(sampler_.initialSamplesPerPixel(), 1, spp);
   const bool adaptive = initial < spp && s0 == 0 && s1 == spp;
   // Offset rays one pixel over are too far apart when a pixel gets many samples (pbrt 3e §1.4.3).
-  const Float differentialScale = 1 / std::sqrt(Float(std::max(1, spp)));
+  const Float differentialScale =
+      std::max(minDifferentialScale_, 1 / std::sqrt(Float(std::max(1, spp))));
   const VolumeIntegrator* volume = scene.volume() ? volumeIntegrator_ : nullptr;
   const bool differentials = scene.needsRayDifferentials() || integrator_.needsRayDifferentials();
   const bool lens = camera_.readsLensSample();

@@ -56,12 +56,16 @@ class SamplerRenderer {
   // The integrator is not const: render() first lets it prepare (SurfaceIntegrator::prepare).
   // volumeIntegrator: for scenes with a volume (Scene::volume()); each camera ray then gets
   // L = T·L_surface + L_volume (lrt draft §16.7). Null, or a scene without a volume: surface only.
+  // Camera ray differentials are scaled by 1/sqrt(samples per pixel) (pbrt 3e §1.4.3), and by no
+  // less than minDifferentialScale (pbrt-v3's renderer keeps 1/8).
   SamplerRenderer(const Camera& camera, const Sampler& sampler, SurfaceIntegrator& integrator,
-                  const VolumeIntegrator* volumeIntegrator = nullptr)
+                  const VolumeIntegrator* volumeIntegrator = nullptr,
+                  Float minDifferentialScale = 0)
       : camera_(camera),
         sampler_(sampler),
         integrator_(integrator),
-        volumeIntegrator_(volumeIntegrator) {}
+        volumeIntegrator_(volumeIntegrator),
+        minDifferentialScale_(minDifferentialScale) {}
   RenderResult render(const Scene& scene, Film& film, const RenderOptions& options) const;
 
  private:
@@ -69,6 +73,7 @@ class SamplerRenderer {
   const Sampler& sampler_;
   SurfaceIntegrator& integrator_;
   const VolumeIntegrator* volumeIntegrator_;
+  Float minDifferentialScale_;
 };
 
 }  // namespace candela

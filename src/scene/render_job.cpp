@@ -268,7 +268,8 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   job.textures = std::make_unique<TextureFactory>(desc.textures, options.loadImage, warn,
                                                   dialect == SceneDialect::PbrtV3
                                                       ? TextureFactory::ImageOrigin::BottomLeft
-                                                      : TextureFactory::ImageOrigin::TopLeft);
+                                                      : TextureFactory::ImageOrigin::TopLeft,
+                                                  options.clampedOctaves);
 
   // pbrt-v2 Volume regions (lrt draft ch. 12): one medium filling the scene and the volume
   // integrator that renders it (pbrt-v2's default: "emission"); neither exists without regions.
@@ -331,6 +332,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   // Sampler and integrator, and the counts the scene leaves out, by its dialect: pbrt-v3's default
   // sampler is halton (16 samples), the lrt draft's and pbrt-v2's are stratified.
   const bool v3 = dialect == SceneDialect::PbrtV3;
+  job.minDifferentialScale = v3 ? Float(0.125) : 0;
   const SamplerDefaults samplerDefaults = v3 ? SamplerDefaults::PbrtV3 : SamplerDefaults::PbrtV2;
   PluginDesc samplerDesc = orDefault(desc.sampler, v3 ? "halton" : "stratified");
   int spp = options.sppOverride;
@@ -451,7 +453,8 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
 ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options) {
   if (job.imageRenderer)
     return job.imageRenderer->render(*job.scene, *job.camera, *job.film, options);
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator, job.volumeIntegrator.get());
+  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator, job.volumeIntegrator.get(),
+                           job.minDifferentialScale);
   ProgressiveResult result;
   if (options.afterPass || options.timeBudget > 0) {
     // The passes' clock starts after the preprocess; reports and the budget count it too.

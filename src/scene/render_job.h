@@ -28,6 +28,7 @@
 #include "shapes/hyperboloid_normal.h"
 #include "shapes/loop_producer.h"
 #include "shapes/shape.h"
+#include "textures/noise.h"
 
 namespace candela {
 
@@ -49,6 +50,7 @@ struct BuildOptions {
   std::string accelerator;  // overrides the Accelerator statement ("" = the scene's)
   LoopProducer subdiv = LoopProducer::Book;  // the code that refines "loopsubdiv" shapes
   HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact;  // --hyperboloid-normal
+  ClampedOctaves clampedOctaves = ClampedOctaves::Mean;            // --turbulence
   unsigned aovs = 0;  // AovFlag bits, added to the Film's "aovs"
   // scene_linear RGB -> working-space RGB for every colour parameter (--colorspace); none =
   // identity.
@@ -114,6 +116,9 @@ struct RenderJob {
   // Wall time of the integrator's preprocess (photon maps, VPLs) at build: renderJob counts it as
   // render time, so that methods with and without a prepass compare by their whole cost.
   double preprocessSeconds = 0;
+  // The least scale of camera ray differentials (SamplerRenderer): pbrt-v3's 1/8 for its
+  // dialect, whose texture filter widths then stop shrinking past 64 samples per pixel.
+  Float minDifferentialScale = 0;
   BuildStats stats;
 };
 

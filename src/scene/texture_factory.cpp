@@ -39,8 +39,9 @@ T getOne(const ParamSet& params, const std::string& name, const T& def) {
 }  // namespace
 
 TextureFactory::TextureFactory(const std::vector<TextureDesc>& descs, ImageLoader loadImage,
-                               Warn warn, ImageOrigin imageOrigin)
+                               Warn warn, ImageOrigin imageOrigin, ClampedOctaves clampedOctaves)
     : imageOrigin_(imageOrigin),
+      clampedOctaves_(clampedOctaves),
       descs_(descs),
       loadImage_(std::move(loadImage)),
       warn_(std::move(warn)) {}
@@ -202,7 +203,7 @@ std::unique_ptr<Texture<T>> TextureFactory::create(const TextureDesc& d, size_t 
                                            p.getOneFloat("roughness", .5f));
   if (c == "wrinkled")
     return std::make_unique<WrinkledTexture<T>>(mapping3D(), p.getOneInt("octaves", 8),
-                                                p.getOneFloat("roughness", .5f));
+                                                p.getOneFloat("roughness", .5f), clampedOctaves_);
   if (c == "windy") return std::make_unique<WindyTexture<T>>(mapping3D());
   if (c == "marble") {
     if constexpr (std::is_same_v<T, Spectrum>)

@@ -28,6 +28,7 @@
 #include "film/image_buffer.h"
 #include "scene/scene_description.h"
 #include "textures/mipmap.h"
+#include "textures/noise.h"
 #include "textures/texture.h"
 
 namespace candela {
@@ -50,8 +51,10 @@ class TextureFactory {
   // corner, pbrt-v2 and the lrt draft at its upper left (scene/scene_dialect.h decides).
   enum class ImageOrigin { BottomLeft, TopLeft };
 
+  // clampedOctaves: what the octaves a wrinkled texture's footprint drops contribute.
   explicit TextureFactory(const std::vector<TextureDesc>& descs, ImageLoader loadImage = {},
-                          Warn warn = {}, ImageOrigin imageOrigin = ImageOrigin::BottomLeft);
+                          Warn warn = {}, ImageOrigin imageOrigin = ImageOrigin::BottomLeft,
+                          ClampedOctaves clampedOctaves = ClampedOctaves::Mean);
   ~TextureFactory();
   TextureFactory(const TextureFactory&) = delete;
   TextureFactory& operator=(const TextureFactory&) = delete;
@@ -90,6 +93,7 @@ class TextureFactory {
  private:
   using MipKey = std::tuple<std::string, std::string, WrapMode, Float, Float>;
   ImageOrigin imageOrigin_;
+  ClampedOctaves clampedOctaves_;
   template <typename T>
   struct Store {
     std::map<size_t, const Texture<T>*> byIndex;  // named textures by their TextureDesc

@@ -98,7 +98,7 @@ Float fbm(const Point3f& p, const Vector3f& dpdx, const Vector3f& dpdy, Float om
 }
 
 Float turbulence(const Point3f& p, const Vector3f& dpdx, const Vector3f& dpdy, Float omega,
-                 int maxOctaves) {
+                 int maxOctaves, ClampedOctaves clamped) {
   Float octaves = fbmOctaves(dpdx, dpdy, maxOctaves);
   int whole = int(octaves);
   Float sum = 0, lambda = 1, amplitude = 1;
@@ -107,7 +107,16 @@ Float turbulence(const Point3f& p, const Vector3f& dpdx, const Vector3f& dpdy, F
     lambda *= 1.99f;
     amplitude *= omega;
   }
-  if (whole < maxOctaves) {
+  if (clamped == ClampedOctaves::AsPbrt) {
+    // pbrt's sum (pbrt 3e §10.6.4): the partial octave, then 0.2 for octaves whole to
+    // maxOctaves - 1 with the partial octave's amplitude first.
+    Float w = smoothStep(.3f, .7f, octaves - Float(whole));
+    sum += amplitude * lerp(w, Float(0.2), std::abs(noise(p * lambda)));
+    for (int i = whole; i < maxOctaves; ++i) {
+      sum += amplitude * Float(0.2);
+      amplitude *= omega;
+    }
+  } else if (whole < maxOctaves) {
     // The partial octave fades from its mean to its value; later octaves are their mean.
     Float w = smoothStep(.3f, .7f, octaves - Float(whole));
     sum += amplitude * lerp(w, kMeanAbsNoise, std::abs(noise(p * lambda)));

@@ -31,11 +31,20 @@ Float fbm(const Point3f& p, const Vector3f& dpdx, const Vector3f& dpdy, Float om
 // substitutes for the octaves of turbulence that are dropped.
 inline constexpr Float kMeanAbsNoise = 0.218f;
 
-// Turbulence: FBm of |noise| (pbrt-v2's "wrinkled"). Octaves dropped by clamping contribute
-// their mean, omega^i kMeanAbsNoise each, so the texture's average does not change with the
-// footprint. (pbrt-v2 adds an unweighted 0.2 per dropped octave, which brightens distant
-// surfaces; we weight each dropped octave by its amplitude.)
+// What the octaves of turbulence that the footprint drops contribute.
+enum class ClampedOctaves {
+  // Their mean, omega^i kMeanAbsNoise each, once: the texture's average does not change with the
+  // footprint.
+  Mean,
+  // pbrt-v2's, pbrt-v3's and pbrt-v4's: 0.2 each, the dropped octaves' sum starting at the
+  // partial octave's amplitude, whose mean so counts twice (and once even when no octave is
+  // dropped). A surface whose footprint drops octaves is brighter by about 0.2 omega^n.
+  AsPbrt,
+};
+
+// Turbulence: FBm of |noise| (pbrt-v2's "wrinkled"), the octaves the footprint drops replaced as
+// `clamped` says.
 Float turbulence(const Point3f& p, const Vector3f& dpdx, const Vector3f& dpdy, Float omega,
-                 int maxOctaves);
+                 int maxOctaves, ClampedOctaves clamped = ClampedOctaves::Mean);
 
 }  // namespace candela

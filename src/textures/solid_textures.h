@@ -31,17 +31,19 @@ class FBmTexture : public Texture<T> {
 template <typename T>
 class WrinkledTexture : public Texture<T> {
  public:
-  WrinkledTexture(TextureMapping3D mapping, int octaves, Float omega)
-      : mapping_(std::move(mapping)), octaves_(octaves), omega_(omega) {}
+  WrinkledTexture(TextureMapping3D mapping, int octaves, Float omega,
+                  ClampedOctaves clamped = ClampedOctaves::Mean)
+      : mapping_(std::move(mapping)), octaves_(octaves), omega_(omega), clamped_(clamped) {}
   T evaluate(const SurfaceInteraction& si) const override {
     TexCoord3D c = mapping_.map(si);
-    return T(turbulence(c.p, c.dpdx, c.dpdy, omega_, octaves_));
+    return T(turbulence(c.p, c.dpdx, c.dpdy, omega_, octaves_, clamped_));
   }
 
  private:
   TextureMapping3D mapping_;
   int octaves_;
   Float omega_;
+  ClampedOctaves clamped_;
 };
 
 // Waves on wind-swept water (§11.7.6): a low-frequency FBm (p / 10, 3 octaves) sets the local

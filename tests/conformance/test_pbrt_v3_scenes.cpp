@@ -64,6 +64,8 @@ std::string deliberateDifferenceOptions(const std::string& scene) {
   // The hyperboloid's normal from the p1-p2 segment's direction, off the fitted surface.
   if (scene == "hyperboloid-uv" || scene == "hyperboloid-checker")
     return " --hyperboloid-normal pbrt";
+  // The wrinkled sphere's octaves dropped by the footprint: 0.2 each, the partial one's twice.
+  if (scene == "procedural") return " --turbulence pbrt";
   return "";
 }
 

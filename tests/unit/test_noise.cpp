@@ -108,3 +108,40 @@ TEST(Noise, TurbulenceMeanDoesNotChangeWithTheFootprint) {
   EXPECT_FLOAT_EQ(far, expectedFar);
   EXPECT_NEAR(nearSum / n, far, 0.02 * far);
 }
+
+TEST(Noise, TurbulenceAsPbrtCountsThePartialOctavesMeanTwice) {
+  // pbrt's clamped octaves (--turbulence pbrt): 0.2 for each octave from the first dropped one,
+  // whose amplitude also carries the partial octave's faded-out 0.2.
+  const Float omega = 0.5f;
+  const int octaves = 6;
+  // No octave kept (a footprint of 100): 0.2 (the partial one) + 0.2 (1 + omega + ... omega^5).
+  Float far = turbulence(Point3f(1.5f, 2.5f, 3.5f), Vector3f(100, 0, 0), Vector3f(), omega, octaves,
+                         ClampedOctaves::AsPbrt);
+  EXPECT_FLOAT_EQ(far, 0.2f + 0.2f * (1 - std::pow(omega, Float(octaves))) / (1 - omega));
+  // Every octave kept (no footprint): the mean form's sum, plus 0.2 omega^6 for the partial
+  // octave that is not there.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<Float> u(-100, 100);
+  for (int i = 0; i < 100; ++i) {
+    Point3f p(u(rng), u(rng), u(rng));
+    Float mean = turbulence(p, Vector3f(), Vector3f(), omega, octaves);
+    Float pbrt = turbulence(p, Vector3f(), Vector3f(), omega, octaves, ClampedOctaves::AsPbrt);
+    EXPECT_FLOAT_EQ(pbrt, mean + 0.2f * std::pow(omega, Float(octaves))) << i;
+  }
+  // A partial octave (a footprint of 2^-1.5: 2.5 octaves, half of the third faded in): the forms
+  // differ, whatever the point, by pbrt's extra 0.2 omega^2 and by 0.2 - kMeanAbsNoise for what
+  // is left of the partial octave's mean and for each dropped octave.
+  const Vector3f dpdx(std::pow(2.f, -1.5f), 0, 0);
+  const Float n = fbmOctaves(dpdx, Vector3f(), octaves);
+  ASSERT_NEAR(n, 2.5f, 1e-5f);
+  const Float w = smoothStep(.3f, .7f, n - 2);
+  const Float delta = 0.2f - kMeanAbsNoise;
+  Float expected = (0.2f + delta * (1 - w)) * std::pow(omega, 2.f);
+  for (int k = 3; k < octaves; ++k) expected += delta * std::pow(omega, Float(k));
+  for (int i = 0; i < 100; ++i) {
+    Point3f p(u(rng), u(rng), u(rng));
+    Float mean = turbulence(p, dpdx, Vector3f(), omega, octaves);
+    Float pbrt = turbulence(p, dpdx, Vector3f(), omega, octaves, ClampedOctaves::AsPbrt);
+    EXPECT_NEAR(pbrt - mean, expected, 1e-6f) << i;
+  }
+}
