@@ -107,22 +107,17 @@ Float turbulence(const Point3f& p, const Vector3f& dpdx, const Vector3f& dpdy, F
     lambda *= 1.99f;
     amplitude *= omega;
   }
-  if (clamped == ClampedOctaves::AsPbrt) {
-    // pbrt's sum (pbrt 3e §10.6.4): the partial octave, then 0.2 for octaves whole to
-    // maxOctaves - 1 with the partial octave's amplitude first.
+  // The partial octave fades from its mean to its value; later octaves are their mean. pbrt's
+  // (pbrt 3e §10.6.4) takes 0.2 for the mean, adds the partial octave even when none is dropped
+  // and starts the dropped octaves at the partial octave's amplitude.
+  const bool asPbrt = clamped == ClampedOctaves::AsPbrt;
+  if (whole < maxOctaves || asPbrt) {
+    const Float mean = asPbrt ? Float(0.2) : kMeanAbsNoise;
     Float w = smoothStep(.3f, .7f, octaves - Float(whole));
-    sum += amplitude * lerp(w, Float(0.2), std::abs(noise(p * lambda)));
-    for (int i = whole; i < maxOctaves; ++i) {
-      sum += amplitude * Float(0.2);
-      amplitude *= omega;
-    }
-  } else if (whole < maxOctaves) {
-    // The partial octave fades from its mean to its value; later octaves are their mean.
-    Float w = smoothStep(.3f, .7f, octaves - Float(whole));
-    sum += amplitude * lerp(w, kMeanAbsNoise, std::abs(noise(p * lambda)));
-    amplitude *= omega;
-    for (int i = whole + 1; i < maxOctaves; ++i) {
-      sum += amplitude * kMeanAbsNoise;
+    sum += amplitude * lerp(w, mean, std::abs(noise(p * lambda)));
+    if (!asPbrt) amplitude *= omega;
+    for (int i = asPbrt ? whole : whole + 1; i < maxOctaves; ++i) {
+      sum += amplitude * mean;
       amplitude *= omega;
     }
   }

@@ -84,6 +84,7 @@ ReferenceAgreement compareWithReference(const std::vector<const ImageBuffer*>& r
 
   ReferenceAgreement out;
   double sumRender = 0, sumReference = 0, sumRel = 0;
+  long comparedBlocks = 0;
   for (int ry = 0; ry < o.regions; ++ry)
     for (int rx = 0; rx < o.regions; ++rx)
       for (int c = 0; c < 3; ++c) {
@@ -92,8 +93,11 @@ ReferenceAgreement compareWithReference(const std::vector<const ImageBuffer*>& r
         region.regionY = ry;
         region.channel = c;
         double numerator = 0, denominator = 0, noiseSquares = 0;
+        int blocks = 0;
         for (int by = ry * perRegionY; by < (ry + 1) * perRegionY; ++by)
           for (int bx = rx * perRegionX; bx < (rx + 1) * perRegionX; ++bx) {
+            if (o.excludedBlocks.count({bx, by})) continue;
+            ++blocks;
             double m = 0;
             for (int i = 0; i < k; ++i) m += means[i] = blockMean(*renders[i], bx, by, o.block, c);
             m /= k;
@@ -114,7 +118,8 @@ ReferenceAgreement compareWithReference(const std::vector<const ImageBuffer*>& r
             region.referenceMean += r;
             sumRel += (m - r) * (m - r) / (r * r + 1e-2);
           }
-        const int blocks = perRegionX * perRegionY;
+        comparedBlocks += blocks;
+        if (blocks == 0) throw std::invalid_argument("every block of a region is excluded");
         region.renderMean /= blocks;
         region.referenceMean /= blocks;
         sumRender += region.renderMean;
@@ -145,7 +150,7 @@ ReferenceAgreement compareWithReference(const std::vector<const ImageBuffer*>& r
         out.regions.push_back(region);
       }
   out.meanRatio = sumReference > 0 ? sumRender / sumReference : 0;
-  out.relMse = sumRel / (double(blocksX) * blocksY * 3);
+  out.relMse = sumRel / double(comparedBlocks);
   return out;
 }
 

@@ -18,7 +18,9 @@
 // make that rare, and their mean has half the noise of two, which finds smaller biases.
 #pragma once
 
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "film/image_buffer.h"
@@ -53,6 +55,9 @@ struct ReferenceAgreementOptions {
   // that both renders missed leaves no noise to measure (see compareWithReference).
   double resolution = 1e-3;
   bool referenceIsHalf = true;  // stored as half floats: ignore differences within their rounding
+  // Blocks (x, y on the block grid) left out of their regions: a known difference confined to a
+  // few pixels, whose regions are still compared over the rest of their blocks.
+  std::set<std::pair<int, int>> excludedBlocks;
 };
 
 // renders (at least two, each with its own seed) and reference: the same size, at least 3 channels

@@ -174,6 +174,29 @@ TEST(ReferenceAgreement, NoiselessDifferencesFailAndNoiselessAgreementPasses) {
   EXPECT_EQ(agreement.worst().channel, 1);
 }
 
+TEST(ReferenceAgreement, ExcludedBlocksAreLeftOutAndTheRestOfTheirRegionCompared) {
+  // A noiseless render; the reference differs in pixel (5, 5), block (1, 1) of region (0, 0).
+  Synthetic s = makeImages(13, [](int, int) { return 0.0; });
+  s.reference.at(5, 5, 1) += 0.01f;
+  ReferenceAgreementOptions o = options();
+  EXPECT_EQ(compareWithReference(s.all(), s.reference, o).worst().pValue, 0);
+  // Left out, its block no longer counts; the region's other 15 blocks agree.
+  o.excludedBlocks = {{1, 1}};
+  ReferenceAgreement agreement = compareWithReference(s.all(), s.reference, o);
+  EXPECT_EQ(agreement.worst().pValue, 1);
+  EXPECT_EQ(agreement.relMse, 0);
+  // A difference elsewhere in that region is still found.
+  s.reference.at(9, 2, 0) += 0.01f;
+  agreement = compareWithReference(s.all(), s.reference, o);
+  EXPECT_EQ(agreement.worst().pValue, 0);
+  EXPECT_EQ(agreement.worst().regionX, 0);
+  EXPECT_EQ(agreement.worst().regionY, 0);
+  // A region with no block left is refused.
+  for (int by = 0; by < 4; ++by)
+    for (int bx = 0; bx < 4; ++bx) o.excludedBlocks.insert({bx, by});
+  EXPECT_THROW(compareWithReference(s.all(), s.reference, o), std::invalid_argument);
+}
+
 TEST(ReferenceAgreement, DifferencesBelowTheResolutionAreNotCounted) {
   // A noiseless render; the reference 0.05% brighter in one block: a difference at resolution 0,
   // none at the default 1e-3 of the region's mean; 3% in one block of the region's 16 is found
