@@ -332,7 +332,6 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   // Sampler and integrator, and the counts the scene leaves out, by its dialect: pbrt-v3's default
   // sampler is halton (16 samples), the lrt draft's and pbrt-v2's are stratified.
   const bool v3 = dialect == SceneDialect::PbrtV3;
-  job.minDifferentialScale = v3 ? Float(0.125) : 0;
   const SamplerDefaults samplerDefaults = v3 ? SamplerDefaults::PbrtV3 : SamplerDefaults::PbrtV2;
   PluginDesc samplerDesc = orDefault(desc.sampler, v3 ? "halton" : "stratified");
   int spp = options.sppOverride;
@@ -354,6 +353,12 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
       !desc.integrator.name.empty()
           ? desc.integrator
           : orDefault(desc.surfaceIntegrator, v3 ? "path" : "directlighting");
+  // pbrt-v3's sampler integrators keep camera ray differentials at no less than 1/8; its
+  // bidirectional integrator scales them by 1/sqrt(spp) alone (pbrt 3e §16.3.1), as do its MLT
+  // and SPPM, which candela runs as image renderers with their own scale.
+  const bool bidirectional =
+      integratorDesc.name == "bdpt" || integratorDesc.name == "bidirectional";
+  job.minDifferentialScale = v3 && !bidirectional ? Float(0.125) : 0;
   ImageRendererContext irc{
       job.camera.get(),    job.sampler.get(),       options.seed, options.quick,
       options.sppOverride, job.film->pixelBounds(), warn};

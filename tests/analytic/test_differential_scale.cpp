@@ -63,11 +63,14 @@ TEST(DifferentialScale, IsOneOverTheRootOfTheSampleCountAndNoLessThanTheFloor) {
   EXPECT_NEAR(floored / meanOffset(v2, 64, 0), 1.0, 1e-4);
 }
 
-TEST(DifferentialScale, TheFloorIsPbrtV3sForItsDialectOnly) {
+TEST(DifferentialScale, TheFloorIsPbrtV3sSamplerIntegratorsOnly) {
   test::RenderedScene v2 = test::buildSceneText(scene("SurfaceIntegrator \"path\"", 4));
   EXPECT_EQ(v2.job().minDifferentialScale, 0);
   test::RenderedScene v3 = test::buildSceneText(scene("Integrator \"path\"", 4));
   EXPECT_EQ(v3.job().minDifferentialScale, Float(0.125));
+  // pbrt-v3's BDPT has no floor: 1/sqrt(spp) alone.
+  test::RenderedScene bdpt = test::buildSceneText(scene("Integrator \"bdpt\"", 4));
+  EXPECT_EQ(bdpt.job().minDifferentialScale, 0);
   BuildOptions asV2;
   asV2.materialModels.dialect = SceneDialect::PbrtV2;
   test::RenderedScene forced = test::buildSceneText(scene("Integrator \"path\"", 4), asV2);
