@@ -102,6 +102,9 @@ class SppmIteration {
     Float weight = camera_.generateRayDifferential(cs, &ray);
     ++rays.cameraRays;
     if (weight == 0) return;
+    // A pixel's iterations are its samples: texture footprints shrink as 1/sqrt(iterations), as
+    // in pbrt-v3's SPPM (pbrt 3e §16.2.2), not a whole pixel each.
+    ray.scaleDifferentials(1 / std::sqrt(Float(std::max(1, s_.iterations))));
     Spectrum beta(weight), ld(0);
     bool specularBounce = false, counted = false;
     for (int depth = 0; depth < s_.maxDepth;) {

@@ -1,8 +1,11 @@
 // The camera ray differentials' scale (pbrt 3e §1.4.3): 1/sqrt(samples per pixel), and no less
-// than pbrt-v3's 1/8 for scenes of its dialect, whose texture filter widths then stop shrinking
-// past 64 samples per pixel (the pbrt-v3 conformance scenes' textures depend on it).
+// than pbrt-v3's 1/8 for scenes of its dialect rendered by its sampler integrators, whose texture
+// filter widths then stop shrinking past 64 samples per pixel (the pbrt-v3 conformance scenes'
+// textures depend on it); SPPM's scale is 1/sqrt(iterations), as pbrt-v3's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "renderers/sampler_renderer.h"
@@ -75,4 +78,67 @@ TEST(DifferentialScale, TheFloorIsPbrtV3sSamplerIntegratorsOnly) {
   asV2.materialModels.dialect = SceneDialect::PbrtV2;
   test::RenderedScene forced = test::buildSceneText(scene("Integrator \"path\"", 4), asV2);
   EXPECT_EQ(forced.job().minDifferentialScale, 0);
+}
+
+namespace {
+
+// A plane filling an orthographic view, lit head-on by a distant light of radiance pi so that a
+// pixel shows its albedo Kd exactly; Kd = c^2, c a closed-form checkerboard of 0 and 1 with 3
+// checks a pixel (u runs 1/8 a pixel, uscale 24). The checkerboard filters over half the
+// footprint each way (ds = 1.5 at the full pixel), and wider than a check it is the mean, 0.5:
+// c^2 is then 0.25 everywhere. At footprint scale 1/8 (ds = 3/16) c is 0 or 1 away from the
+// checks' edges and ramps across them: over the plane c^2 averages 0.3906 (by quadrature of the
+// closed form; 0.2778 at scale 1/4 ... 0.25 from scale 2/3 up).
+std::string checkSquaresUnderSppm(int iterations) {
+  return "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"orthographic\"\n"
+         "Film \"image\" \"integer xresolution\" [8] \"integer yresolution\" [8]\n"
+         "Integrator \"sppm\" \"integer numiterations\" [" +
+         std::to_string(iterations) +
+         "]\nWorldBegin\n"
+         "LightSource \"distant\" \"point from\" [0 0 5] \"point to\" [0 0 0] "
+         "\"rgb L\" [3.14159265 3.14159265 3.14159265]\n"
+         "Texture \"c\" \"spectrum\" \"checkerboard\" \"float uscale\" [24] \"float vscale\" [24] "
+         "\"rgb tex1\" [0 0 0] \"rgb tex2\" [1 1 1]\n"
+         "Texture \"c2\" \"spectrum\" \"scale\" \"texture tex1\" \"c\" \"texture tex2\" \"c\"\n"
+         "Material \"matte\" \"texture Kd\" \"c2\"\n"
+         "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] "
+         "\"point P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0] \"float uv\" [0 0  1 0  1 1  0 1]\n"
+         "WorldEnd\n";
+}
+
+}  // namespace
+
+// pbrt-v3's SPPM scales camera ray differentials by 1/sqrt(iterations) (pbrt 3e §16.2.2): one
+// iteration filters each check over a whole pixel, 64 over an eighth of one.
+TEST(DifferentialScale, SppmFootprintsShrinkAsOneOverTheRootOfTheIterations) {
+  auto meanAndRange = [](int iterations, double* lo, double* hi) {
+    test::TestRenderOptions o;
+    o.build.seed = 3;
+    auto r = test::renderSceneText(checkSquaresUnderSppm(iterations), o);
+    const Film& film = r.film();
+    Bounds2i b = film.pixelBounds();
+    double sum = 0;
+    int n = 0;
+    *lo = 1e30;
+    *hi = -1e30;
+    for (int y = b.pMin.y; y < b.pMax.y; ++y)
+      for (int x = b.pMin.x; x < b.pMax.x; ++x, ++n) {
+        double v = film.pixelValue(Point2i(x, y))[1];
+        sum += v;
+        *lo = std::min(*lo, v);
+        *hi = std::max(*hi, v);
+      }
+    return sum / n;
+  };
+  double lo, hi;
+  // One iteration: the full pixel, c = 0.5 and c^2 = 0.25 in every pixel.
+  meanAndRange(1, &lo, &hi);
+  EXPECT_NEAR(lo, 0.25, 1e-5);
+  EXPECT_NEAR(hi, 0.25, 1e-5);
+  // 64 iterations at scale 1/8 (0.25 in every pixel with a whole pixel's footprint): 4,096
+  // visible points of c^2 in [0, 1] (standard deviation at most 0.5, so the mean's at most
+  // 0.008); 0.03 is more than 3.8 of them.
+  double mean64 = meanAndRange(64, &lo, &hi);
+  std::printf("64 iterations: mean %.4f, pixels %.4f to %.4f\n", mean64, lo, hi);
+  EXPECT_NEAR(mean64, 0.3906, 0.03);
 }
