@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "renderers/sampler_renderer.h"
 #include "support/render_scene.h"
@@ -43,12 +44,10 @@ double meanOffset(const char* integratorStatement, int spp, Float minScale) {
   DifferentialProbe probe;
   SamplerRenderer renderer(*job.camera, *job.sampler, probe, nullptr, minScale);
   renderer.render(*job.scene, *job.film, RenderOptions{1, 16, true});
+  std::vector<Spectrum> pixels = test::pixelValues(*job.film);
   double sum = 0;
-  int n = 0;
-  Bounds2i b = job.film->pixelBounds();
-  for (int y = b.pMin.y; y < b.pMax.y; ++y)
-    for (int x = b.pMin.x; x < b.pMax.x; ++x, ++n) sum += job.film->pixelValue(Point2i(x, y))[0];
-  return sum / n;
+  for (const Spectrum& v : pixels) sum += v[0];
+  return sum / double(pixels.size());
 }
 
 }  // namespace
@@ -115,20 +114,16 @@ TEST(DifferentialScale, SppmFootprintsShrinkAsOneOverTheRootOfTheIterations) {
     test::TestRenderOptions o;
     o.build.seed = 3;
     auto r = test::renderSceneText(checkSquaresUnderSppm(iterations), o);
-    const Film& film = r.film();
-    Bounds2i b = film.pixelBounds();
+    std::vector<Spectrum> pixels = test::pixelValues(r.film());
     double sum = 0;
-    int n = 0;
     *lo = 1e30;
     *hi = -1e30;
-    for (int y = b.pMin.y; y < b.pMax.y; ++y)
-      for (int x = b.pMin.x; x < b.pMax.x; ++x, ++n) {
-        double v = film.pixelValue(Point2i(x, y))[1];
-        sum += v;
-        *lo = std::min(*lo, v);
-        *hi = std::max(*hi, v);
-      }
-    return sum / n;
+    for (const Spectrum& v : pixels) {
+      sum += v[1];
+      *lo = std::min(*lo, double(v[1]));
+      *hi = std::max(*hi, double(v[1]));
+    }
+    return sum / double(pixels.size());
   };
   double lo, hi;
   // One iteration: the full pixel, c = 0.5 and c^2 = 0.25 in every pixel.

@@ -80,6 +80,14 @@ RenderedScene renderSceneText(const std::string& text, const TestRenderOptions& 
   return run(text, options.build, &options.render);
 }
 
+std::vector<Spectrum> pixelValues(const Film& film) {
+  std::vector<Spectrum> values;
+  const Bounds2i b = film.pixelBounds();
+  for (int y = b.pMin.y; y < b.pMax.y; ++y)
+    for (int x = b.pMin.x; x < b.pMax.x; ++x) values.push_back(film.pixelValue(Point2i(x, y)));
+  return values;
+}
+
 RenderedScene buildSceneText(const std::string& text, const BuildOptions& options) {
   return run(text, options, nullptr);
 }

@@ -38,4 +38,7 @@ RenderedScene renderSceneText(const std::string& text, const TestRenderOptions& 
 // Only parse and build (no rendering).
 RenderedScene buildSceneText(const std::string& text, const BuildOptions& options = {});
 
+// The film's pixel values, row by row.
+std::vector<Spectrum> pixelValues(const Film& film);
+
 }  // namespace candela::test
