@@ -80,7 +80,10 @@ class SppmIteration {
         camera_(camera),
         s_(s),
         pixels_(pixels),
-        lights_(lightPowerDistribution(scene)) {}
+        lights_(lightPowerDistribution(scene)),
+        // A pixel's iterations are its samples: texture footprints shrink as 1/sqrt(iterations),
+        // as in pbrt-v3's SPPM (pbrt 3e §16.2.2), not a whole pixel each.
+        differentialScale_(1 / std::sqrt(Float(std::max(1, s.iterations)))) {}
 
   // The camera path of one pixel in iteration k: emission and direct light into ld, and the
   // visible point (pbrt 3e §16.2.2).
@@ -102,9 +105,7 @@ class SppmIteration {
     Float weight = camera_.generateRayDifferential(cs, &ray);
     ++rays.cameraRays;
     if (weight == 0) return;
-    // A pixel's iterations are its samples: texture footprints shrink as 1/sqrt(iterations), as
-    // in pbrt-v3's SPPM (pbrt 3e §16.2.2), not a whole pixel each.
-    ray.scaleDifferentials(1 / std::sqrt(Float(std::max(1, s_.iterations))));
+    ray.scaleDifferentials(differentialScale_);
     Spectrum beta(weight), ld(0);
     bool specularBounce = false, counted = false;
     for (int depth = 0; depth < s_.maxDepth;) {
@@ -235,6 +236,7 @@ class SppmIteration {
   const SppmSettings& s_;
   std::vector<PixelState>& pixels_;
   std::optional<Distribution1D> lights_;  // none when no light emits
+  Float differentialScale_;
 };
 
 }  // namespace

@@ -353,12 +353,6 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
       !desc.integrator.name.empty()
           ? desc.integrator
           : orDefault(desc.surfaceIntegrator, v3 ? "path" : "directlighting");
-  // pbrt-v3's sampler integrators keep camera ray differentials at no less than 1/8; its
-  // bidirectional integrator scales them by 1/sqrt(spp) alone (pbrt 3e §16.3.1), as do its MLT
-  // and SPPM, which candela runs as image renderers with their own scale.
-  const bool bidirectional =
-      integratorDesc.name == "bdpt" || integratorDesc.name == "bidirectional";
-  job.minDifferentialScale = v3 && !bidirectional ? Float(0.125) : 0;
   ImageRendererContext irc{
       job.camera.get(),    job.sampler.get(),       options.seed, options.quick,
       options.sppOverride, job.film->pixelBounds(), warn};
@@ -376,6 +370,10 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
            "renderer '" + desc.renderer.name + "' is not available; using the sampler renderer");
     job.integrator =
         createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds());
+    // pbrt-v3's sampler integrators keep camera ray differentials at no less than 1/8; its
+    // bidirectional integrator, the one that splats light subpaths, scales them by 1/sqrt(spp)
+    // alone (pbrt 3e §16.3.1), as do its MLT and SPPM, candela's image renderers.
+    job.minDifferentialScale = v3 && !job.integrator->splats() ? Float(0.125) : 0;
     if (job.volume && !job.integrator->attenuatesEveryRay() && warn)
       warn(desc.volumes.front().loc,
            "Volume regions attenuate only the camera rays and direct lighting of integrator '" +

@@ -94,11 +94,17 @@ struct KnownDifference {
   std::string reason;
   std::set<std::pair<int, int>> blocks = {};
 };
+// The blocks (x, y) with x0 <= x <= x1 and y0 <= y <= y1.
+std::set<std::pair<int, int>> blocksIn(int x0, int x1, int y0, int y1) {
+  std::set<std::pair<int, int>> blocks;
+  for (int x = x0; x <= x1; ++x)
+    for (int y = y0; y <= y1; ++y) blocks.insert({x, y});
+  return blocks;
+}
 // The blocks around the cone's apex in quadrics-uv and quadrics-checker.
-const std::set<std::pair<int, int>> kConeApexBlocks = {{15, 15}, {16, 15}, {15, 16}, {16, 16}};
+const std::set<std::pair<int, int>> kConeApexBlocks = blocksIn(15, 16, 15, 16);
 // The blocks of the pixel column at the right hyperboloid's left silhouette.
-const std::set<std::pair<int, int>> kHyperboloidSilhouetteBlocks = {
-    {25, 6}, {25, 7}, {25, 8}, {25, 9}, {25, 10}, {26, 6}, {26, 7}, {26, 8}, {26, 9}, {26, 10}};
+const std::set<std::pair<int, int>> kHyperboloidSilhouetteBlocks = blocksIn(25, 26, 6, 10);
 const std::map<std::string, KnownDifference> kKnownDifferences = {
     // The apex is at the image's centre, pixels (63..64, 63..64): the corner of four regions.
     {"quadrics-uv",
