@@ -4,6 +4,7 @@
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <map>
@@ -73,6 +74,7 @@ Interaction vertexOf(const RTCRayHit& rh) {
 
 struct ThreadTotals {
   RayKind camera, bounce, shadow;
+  double tileSeconds = 0;  // whole tiles: queries and ray making
 };
 
 // One tile's paths, a wavefront per depth: the batches of queries are timed, the rest is not.
@@ -214,7 +216,10 @@ CeilingResult EmbreeCeiling::run(const Camera& camera, const std::vector<const L
         int x0 = b.pMin.x + (i % nx) * tile, y0 = b.pMin.y + (i / nx) * tile;
         Bounds2i t(Point2i(x0, y0),
                    Point2i(std::min(x0 + tile, b.pMax.x), std::min(y0 + tile, b.pMax.y)));
-        traceTile(scene_, camera, lights, o, t, uint64_t(i), &totals.local());
+        ThreadTotals& mine = totals.local();
+        double tileStart = threadCpuSeconds();
+        traceTile(scene_, camera, lights, o, t, uint64_t(i), &mine);
+        mine.tileSeconds += threadCpuSeconds() - tileStart;
       },
       tbb::simple_partitioner());
   CeilingResult r;
@@ -223,7 +228,9 @@ CeilingResult EmbreeCeiling::run(const Camera& camera, const std::vector<const L
     add(&r.camera, t.camera);
     add(&r.bounce, t.bounce);
     add(&r.shadow, t.shadow);
+    r.makingSeconds += t.tileSeconds;
   }
+  r.makingSeconds = std::max(0.0, r.makingSeconds - r.cpuSeconds());
   return r;
 }
 

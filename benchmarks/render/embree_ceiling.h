@@ -47,6 +47,11 @@ struct RayKind {
 struct CeilingResult {
   RayKind camera, bounce, shadow;
   double wallSeconds = 0;  // the whole run, ray making included
+  // CPU seconds (summed over threads) spent between the queries: the camera rays, light points,
+  // cosine-distributed bounces and spawning, with no BSDF, no MIS weight, no hit interaction and
+  // no film. A scalar renderer that did only this work between the same queries would trace at
+  // cpuSeconds() / (cpuSeconds() + makingSeconds) of the ceiling's rate.
+  double makingSeconds = 0;
   long rays() const { return camera.rays + bounce.rays + shadow.rays; }
   double cpuSeconds() const { return camera.cpuSeconds + bounce.cpuSeconds + shadow.cpuSeconds; }
 };
