@@ -2,11 +2,10 @@
 
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/read_file.h"
 
 namespace candela {
 
@@ -71,7 +70,7 @@ constexpr uint32_t kFlagBsdf = 1, kFlagExtrapolated = 2;
 
 // Reads little-endian fields from the file's bytes; the caller has checked the sizes.
 struct ByteReader {
-  const std::vector<char>& bytes;
+  std::string_view bytes;
   size_t at = 0;
   uint32_t u32() {
     uint32_t v;
@@ -96,24 +95,20 @@ struct ByteReader {
 }  // namespace
 
 FourierBsdfTable readFourierBsdf(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw FileError(path, "cannot open the Fourier BSDF file (no such file)");
-  uintmax_t size = std::filesystem::file_size(path, ec);
-  std::ifstream in(path, std::ios::binary);
-  if (ec || !in) throw FileError(path, "cannot open the Fourier BSDF file");
+  return parseFourierBsdf(readWholeFile(path), path);
+}
+
+FourierBsdfTable parseFourierBsdf(std::string_view bytes, const std::string& path) {
+  const uint64_t size = bytes.size();
   if (size < kHeaderBytes)
     throw FileError(path, "too short for a Fourier BSDF header (" + std::to_string(size) +
                               " bytes; the header has 64)");
-  std::vector<char> header(kHeaderBytes);
-  if (!in.read(header.data(), std::streamsize(kHeaderBytes)))
-    throw FileError(path, "cannot read the Fourier BSDF header");
-  if (std::memcmp(header.data(), "SCATFUN", 7) != 0)
+  if (bytes.substr(0, 7) != "SCATFUN")
     throw FileError(path, "not a Fourier BSDF file (it does not start with \"SCATFUN\")");
-  if (uint8_t(header[7]) != 1)
-    throw FileError(path, "Fourier BSDF file version " + std::to_string(uint8_t(header[7])) +
+  if (uint8_t(bytes[7]) != 1)
+    throw FileError(path, "Fourier BSDF file version " + std::to_string(uint8_t(bytes[7])) +
                               " is not supported (only version 1)");
-  ByteReader h{header, 8};
+  ByteReader h{bytes, 8};
   uint32_t flags = h.u32(), nMu = h.u32(), nCoeffs = h.u32(), mMax = h.u32(), nChannels = h.u32(),
            nBases = h.u32(), nMetadata = h.u32(), nParameters = h.u32(), nParameterValues = h.u32();
   Float eta = h.f32();
@@ -144,10 +139,7 @@ FourierBsdfTable readFourierBsdf(const std::string& path) {
                               " bytes but its header's sizes add up to " +
                               std::to_string(expected) +
                               (size < expected ? " (the file is truncated)" : ""));
-  std::vector<char> body(size_t(expected - kHeaderBytes));
-  if (!in.read(body.data(), std::streamsize(body.size())))
-    throw FileError(path, "Fourier BSDF file is truncated");
-  ByteReader r{body};
+  ByteReader r{bytes, kHeaderBytes};
   FourierBsdfTable::Contents c;
   c.eta = eta;
   c.mMax = int(mMax);

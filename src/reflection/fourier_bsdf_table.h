@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "reflection/catmull_rom.h"
@@ -64,5 +65,7 @@ class FourierBsdfTable {
 
 // Reads a file in the format above; throws FileError naming the path and what is wrong.
 FourierBsdfTable readFourierBsdf(const std::string& path);
+// The same for a file's bytes already in memory; path names it in errors.
+FourierBsdfTable parseFourierBsdf(std::string_view bytes, const std::string& path);
 
 }  // namespace candela

@@ -52,6 +52,12 @@ std::array<Float, 3> interpolatedSeries(const FourierBsdfTable& t, const CellWei
   return v;
 }
 
+// Only a corrupt table's coefficients (near the float range) or a direction all but in the
+// surface's plane (1 / |mu_i| beyond it) overflow: such a value or density counts as none, so
+// that no infinity reaches the integrators.
+Spectrum finiteOrNone(const Spectrum& f) { return f.isFinite() ? f : Spectrum(0); }
+Float finiteOrNone(Float pdf) { return std::isfinite(pdf) ? pdf : 0; }
+
 // f from the summed series: divided by |mu_i| (the table holds f |mu_i|), scaled by
 // (eta_o / eta_i)^2 across the surface as radiance is (pbrt 3e §8.2.3), with eta the index
 // below over the one above.
@@ -64,11 +70,11 @@ Spectrum valueFromSeries(const FourierBsdfTable& t, const std::array<Float, 3>& 
     Float etaRatio = muI > 0 ? 1 / t.eta() : t.eta();
     scale *= etaRatio * etaRatio;
   }
-  if (t.nChannels() == 1) return Spectrum(s[0] * scale);
+  if (t.nChannels() == 1) return finiteOrNone(Spectrum(s[0] * scale));
   Float y = s[0], r = s[1], b = s[2];
   Float g = (y - kLumR * r - kLumB * b) / kLumG;
-  return Spectrum(std::max(Float(0), r * scale), std::max(Float(0), g * scale),
-                  std::max(Float(0), b * scale));
+  return finiteOrNone(Spectrum(std::max(Float(0), r * scale), std::max(Float(0), g * scale),
+                               std::max(Float(0), b * scale)));
 }
 
 }  // namespace
@@ -91,7 +97,7 @@ Float FourierBSDF::pdf(const Vector3f& wo, const Vector3f& wi) const {
   CellWeights w;
   if (!cellWeights(*table_, a.muI, a.muO, &w)) return 0;
   Float y = interpolatedSeries(*table_, w, a.cosPhi, 1)[0];
-  return y > 0 ? y / (2 * kPi * integral) : 0;
+  return y > 0 ? finiteOrNone(y / (2 * kPi * integral)) : 0;
 }
 
 Spectrum FourierBSDF::sampleF(const Vector3f& wo, Vector3f* wi, const Point2f& u, Float* pdfOut,
@@ -122,7 +128,9 @@ Spectrum FourierBSDF::sampleF(const Vector3f& wo, Vector3f* wi, const Point2f& u
   Float sinI = std::sqrt(std::max(Float(0), 1 - muI * muI));
   Float cosO = cosPhi(wo), sinO = sinPhi(wo), c = std::cos(phi), s = std::sin(phi);
   *wi = Vector3f(-sinI * (cosO * c - sinO * s), -sinI * (sinO * c + cosO * s), -muI);
-  *pdfOut = pdfMu * pdfPhi;
+  Float pdf = finiteOrNone(pdfMu * pdfPhi);
+  if (pdf == 0) return Spectrum(0);
+  *pdfOut = pdf;
   if (sampledType) *sampledType = BxDFType((muI * muO > 0 ? kTransmission : kReflection) | kGlossy);
   return f(wo, *wi);
 }

@@ -37,6 +37,7 @@ TEST(FuzzCorpus, Ply) { replay("ply", fuzz::ply); }
 TEST(FuzzCorpus, Spd) { replay("spd", fuzz::spd); }
 TEST(FuzzCorpus, Brdf) { replay("brdf", fuzz::brdf); }
 TEST(FuzzCorpus, Merl) { replay("merl", fuzz::merl); }
+TEST(FuzzCorpus, Fourier) { replay("fourier", fuzz::fourier); }
 
 TEST(FuzzCorpus, SplitFilesNamesEachPartUnderFuzz) {
   auto files = fuzz::splitFiles(

@@ -14,6 +14,7 @@ void ply(std::string_view input);        // a PLY mesh
 void spd(std::string_view input);        // a .spd spectrum, converted to RGB
 void brdf(std::string_view input);       // a pbrt-v2 .brdf table, looked up
 void merl(std::string_view input);       // a MERL binary BRDF, looked up
+void fourier(std::string_view input);    // a pbrt-v3 Fourier .bsdf table, evaluated and sampled
 
 // Aborts with the message when a reader broke a promise (a check, not an assertion: it stays
 // in release builds).

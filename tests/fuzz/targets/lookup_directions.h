@@ -4,11 +4,15 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "core/spectrum.h"
 #include "core/vector.h"
 
 namespace candela::fuzz {
+
+// The directions the checks pair: the poles, grazing directions and both hemispheres.
+const std::vector<Vector3f>& lookupDirections();
 
 using BrdfLookup = std::function<Spectrum(const Vector3f& wo, const Vector3f& wi)>;
 
