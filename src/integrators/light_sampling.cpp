@@ -8,8 +8,9 @@ namespace candela {
 
 namespace {
 
-// The light strategy: one sample of `light`, chosen among `choices` lights with equal probability
-// (the strategy's density is the light's over choices), weighted by the power heuristic against
+// The light strategy: one sample of `light`, chosen with probability 1 / choices (among
+// `choices` lights with equal probability, or by a LightSampler; the strategy's density is the
+// light's over choices), weighted by the power heuristic against
 // the BSDF's density of the direction over the components in bsdfFlags. volume: set when the
 // caller can attenuate by the scene's volume (pbrt-v2 Volume regions).
 Spectrum sampleLightStrategy(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
@@ -126,6 +127,14 @@ Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsd
   const Light& light = *scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
   // The density of a direction under the light strategy includes the choice of the light.
   return sampleLightStrategy(it, bsdf, light, uLight, Float(nLights), kAllBxDF, scene, ctx.stats,
+                             &ctx);
+}
+
+Spectrum sampleLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
+                                Float choicePdf, const Scene& scene, IntegratorContext& ctx,
+                                const Point2f& uLight) {
+  if (!(choicePdf > 0)) return Spectrum(0);
+  return sampleLightStrategy(it, bsdf, light, uLight, 1 / choicePdf, kAllBxDF, scene, ctx.stats,
                              &ctx);
 }
 

@@ -32,5 +32,9 @@ Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsd
 Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
                                    const Scene& scene, IntegratorContext& ctx, Float uChoice,
                                    const Point2f& uLight);
+// The same for a light the caller chose (a LightSampler) with probability choicePdf.
+Spectrum sampleLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
+                                Float choicePdf, const Scene& scene, IntegratorContext& ctx,
+                                const Point2f& uLight);
 
 }  // namespace candela

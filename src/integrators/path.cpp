@@ -9,6 +9,12 @@
 
 namespace candela {
 
+void PathIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
+  lightSampler_.reset();
+  if (settings_.lightStrategy != LightSampleStrategy::Uniform)
+    lightSampler_ = createLightSampler(settings_.lightStrategy, scene);
+}
+
 Spectrum PathIntegrator::Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
                             Float* alpha) const {
   Float hitDistance;
@@ -38,6 +44,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
                                   IntegratorContext& ctx, bool firstEmission, Float* alpha,
                                   Float* hitDistance, const FirstHit* first) const {
   Spectrum l(0), beta(1);
+  // The radiance scaling of the refractions the path passed, for pbrt-v3's roulette.
+  Float etaScale = 1;
   RayDifferential ray(cameraRay);
   bool specularBounce = false;
   // The vertex the current ray left and the BSDF's density of its direction there.
@@ -68,7 +76,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
       bool weighted = bounces > 0 && !specularBounce;
       auto misWeight = [&](const Light& light) {
         if (!weighted) return Float(1);
-        Float lightPdf = lightChoicePdf * light.pdfLi(previous, ray.d);
+        Float choicePdf = lightSampler_ ? lightSampler_->pmf(previous.p, light) : lightChoicePdf;
+        Float lightPdf = choicePdf * light.pdfLi(previous, ray.d);
         return powerHeuristic(1, scatteringPdf, 1, lightPdf);
       };
       if (hit) {
@@ -115,11 +124,23 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     // divisions and series then overlaps the light sample's work rather than following it.
     Spectrum f = bsdf->sampleF(isect.wo, &wi, uComponent, ctx.get2D(), &scatteringPdf, kAllBxDF,
                                &sampledType);
-    if (sampledLight)
-      l += beta * sampleOneLightAgainstBSDF(isect, *bsdf, scene, ctx, uChoice, uLight);
+    if (sampledLight) {
+      if (!lightSampler_) {
+        l += beta * sampleOneLightAgainstBSDF(isect, *bsdf, scene, ctx, uChoice, uLight);
+      } else {
+        Float choicePdf = 0;
+        if (const Light* light = lightSampler_->sample(isect.p, uChoice, &choicePdf))
+          l += beta * sampleLightAgainstBSDF(isect, *bsdf, *light, choicePdf, scene, ctx, uLight);
+      }
+    }
     if (f.isBlack() || scatteringPdf == 0) break;
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
     specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
+    if (settings_.pbrtV3Roulette && (sampledType & kSpecular) && (sampledType & kTransmission)) {
+      // Entering the denser side (wo on the side the normal points to) scales radiance by eta^2.
+      Float eta2 = bsdf->eta * bsdf->eta;
+      etaScale *= dot(isect.wo, isect.n) > 0 ? eta2 : 1 / eta2;
+    }
     previous = isect;
     // The next segment, its differentials off: those left in ray are never read (every reader
     // tests hasDifferentials), so need no zeroing.
@@ -130,9 +151,17 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     // min(0.5, y); the throughput's largest channel wastes less on coloured paths). Not before
     // the last segment, which only looks for emission: it would add variance to save one ray.
     if (bounces >= rrStartDepth_ && bounces + 1 < maxDepth_) {
-      Float q = std::max(Float(0.05), 1 - beta.maxComponent());
-      if (ctx.get1D() < q) break;
-      beta /= 1 - q;
+      Float survival = beta.maxComponent();
+      bool faces = true;
+      if (settings_.pbrtV3Roulette) {
+        survival *= etaScale;
+        faces = survival < settings_.rrThreshold;
+      }
+      if (faces) {
+        Float q = std::max(Float(0.05), 1 - survival);
+        if (ctx.get1D() < q) break;
+        beta /= 1 - q;
+      }
     }
     if (!beta.isFinite()) break;
   }

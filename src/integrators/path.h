@@ -3,18 +3,42 @@
 // of maxdepth d carries emission seen directly plus up to d reflections. Each vertex traces one
 // shadow ray and one ray onward: the BSDF's sample that continues the path is also the BSDF
 // strategy of the light's MIS (pbrt 4e §13.4), where pbrt 2e traces a third ray for it.
+//
+// Russian roulette starts at rrStartDepth. By default (pbrt-v2's scenes) every path faces it there,
+// continuing with the throughput's largest channel. With pbrt-v3's rule (its "rrthreshold", on
+// for pbrt-v3 scenes) only a path whose throughput, times the radiance scaling of the refractions
+// it passed (eta^2 for each entry, pbrt 3e §16.1), is below rrthreshold faces it, continuing with
+// that scaled throughput. The light a vertex samples is chosen by lightsamplestrategy
+// (light_sampler.h); uniform by default, pbrt-v3's "spatial" for pbrt-v3 scenes.
 #pragma once
 
+#include <memory>
+
 #include "integrators/integrator.h"
+#include "lights/light_sampler.h"
 
 namespace candela {
+
+struct PathSettings {
+  int maxDepth = 5;
+  int rrStartDepth = 3;
+  bool pbrtV3Roulette = false;
+  Float rrThreshold = 1;  // with pbrtV3Roulette
+  LightSampleStrategy lightStrategy = LightSampleStrategy::Uniform;
+};
 
 class PathIntegrator : public SurfaceIntegrator {
  public:
   bool attenuatesEveryRay() const override { return true; }
   explicit PathIntegrator(int maxDepth, int rrStartDepth = 3)
-      : maxDepth_(maxDepth), rrStartDepth_(rrStartDepth) {}
+      : PathIntegrator(PathSettings{maxDepth, rrStartDepth}) {}
+  explicit PathIntegrator(const PathSettings& settings)
+      : maxDepth_(settings.maxDepth), rrStartDepth_(settings.rrStartDepth), settings_(settings) {}
   int maxDepth() const { return maxDepth_; }
+  const PathSettings& settings() const { return settings_; }
+  // Makes the light sampler of a strategy other than uniform (uniform's choice is made inline:
+  // no virtual call per vertex that the scene does not need).
+  void preprocess(const Scene& scene, const PreprocessOptions& options) override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
   bool startsFromFirstHit() const override { return true; }
@@ -38,6 +62,8 @@ class PathIntegrator : public SurfaceIntegrator {
                     const FirstHit* first = nullptr) const;
   int maxDepth_;
   int rrStartDepth_;
+  PathSettings settings_;
+  std::unique_ptr<LightSampler> lightSampler_;  // null: uniform
 };
 
 }  // namespace candela

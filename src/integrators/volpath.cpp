@@ -58,6 +58,7 @@ struct PathState {
   MediaRules media;
   RNG& rng;
   RayStats& stats;
+  const LightSampler* lightSampler;  // null: uniform
 };
 
 // Transmittance from `from` to `to` in `medium` (the one the segment starts in), through pure
@@ -101,7 +102,8 @@ Spectrum lightAlong(const Interaction& from, const Vector3f& w, const Medium* me
   return le;
 }
 
-// One light chosen uniformly: a light sample and a BSDF/phase sample combined by the power
+// One light chosen (uniformly, or by the light sampler): a light sample and a BSDF/phase sample,
+// divided by the choice's probability, combined by the power
 // heuristic (pbrt 3e §14.3.1, §15.3.1), each with its transmittance. shadowMedium(w) is the
 // medium a ray leaving it in direction w starts in.
 template <typename ShadowMedium>
@@ -113,7 +115,11 @@ Spectrum sampleOneLight(const Interaction& it, const Scatterer& scatterer,
   Point2f uScattering = sampler.get2D();
   Float uComponent = sampler.get1D();
   if (nLights == 0) return Spectrum(0);
-  const Light& light = *s.scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
+  Float choicePdf = 1 / Float(nLights);
+  const Light* chosen = s.scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
+  if (s.lightSampler) chosen = s.lightSampler->sample(it.p, uChoice, &choicePdf);
+  if (!chosen || !(choicePdf > 0)) return Spectrum(0);
+  const Light& light = *chosen;
   Spectrum ld(0);
   Vector3f wi;
   Float lightPdf = 0, scatteringPdf = 0;
@@ -141,7 +147,7 @@ Spectrum sampleOneLight(const Interaction& it, const Scatterer& scatterer,
       }
     }
   }
-  return ld * Float(nLights);
+  return s.lightSampler ? ld / choicePdf : ld * Float(nLights);
 }
 
 // A per-path generator for the tracking decisions, seeded from two sampler dimensions (so a
@@ -154,10 +160,16 @@ RNG pathRng(Sampler& sampler) {
 
 }  // namespace
 
+void VolPathIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
+  lightSampler_.reset();
+  if (lightStrategy_ != LightSampleStrategy::Uniform)
+    lightSampler_ = createLightSampler(lightStrategy_, scene);
+}
+
 Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene,
                                IntegratorContext& ctx, Float* alpha) const {
   RNG rng = pathRng(ctx.sampler);
-  PathState s{scene, MediaRules{scene.volume()}, rng, ctx.stats};
+  PathState s{scene, MediaRules{scene.volume()}, rng, ctx.stats, lightSampler_.get()};
   const Medium* medium = scene.volume() ? scene.volume() : scene.media().camera;
   Spectrum l(0), beta(1);
   RayDifferential ray(cameraRay);

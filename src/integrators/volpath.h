@@ -10,9 +10,15 @@
 // has pbrt-v2 Volume regions (Scene::volume()), that medium fills all space instead and
 // interfaces do not change it. Tracking draws from a per-path RNG seeded from the sampler, so
 // the image stays a function of (scene, spp, seed).
+//
+// The light a vertex samples is chosen by lightsamplestrategy (light_sampler.h; pbrt-v3's default,
+// "spatial", for scenes that name no strategy), its estimate divided by the choice's probability.
 #pragma once
 
+#include <memory>
+
 #include "integrators/integrator.h"
+#include "lights/light_sampler.h"
 
 namespace candela {
 
@@ -20,8 +26,11 @@ class VolPathIntegrator : public SurfaceIntegrator {
  public:
   // maxDepth: scattering events (surface or medium) at most; rrThreshold: Russian roulette
   // starts once the throughput's largest channel falls below it (pbrt-v3's defaults 5 and 1).
-  VolPathIntegrator(int maxDepth, Float rrThreshold)
-      : maxDepth_(maxDepth), rrThreshold_(rrThreshold) {}
+  VolPathIntegrator(int maxDepth, Float rrThreshold,
+                    LightSampleStrategy lightStrategy = LightSampleStrategy::Uniform)
+      : maxDepth_(maxDepth), rrThreshold_(rrThreshold), lightStrategy_(lightStrategy) {}
+  // Makes the light sampler of a strategy other than uniform (chosen inline).
+  void preprocess(const Scene& scene, const PreprocessOptions& options) override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
   bool rendersMedia() const override { return true; }
@@ -29,6 +38,8 @@ class VolPathIntegrator : public SurfaceIntegrator {
  private:
   int maxDepth_;
   Float rrThreshold_;
+  LightSampleStrategy lightStrategy_;
+  std::unique_ptr<LightSampler> lightSampler_;  // null: uniform
 };
 
 }  // namespace candela

@@ -193,11 +193,42 @@ std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc
   return std::make_unique<DipoleSubsurfaceIntegrator>(s);
 }
 
+// pbrt-v3's "lightsamplestrategy" of path and volpath: "spatial" in pbrt-v3 scenes that name none,
+// else uniform (pbrt-v2's choice).
+LightSampleStrategy lightStrategyParam(const PluginDesc& desc, SceneDialect dialect) {
+  const ParamSet& p = desc.params;
+  std::string strategy = p.getOneString("lightsamplestrategy",
+                                        dialect == SceneDialect::PbrtV3 ? "spatial" : "uniform");
+  std::optional<LightSampleStrategy> named = lightSampleStrategyNamed(strategy);
+  if (!named)
+    throw SceneError(
+        p.locationOf("lightsamplestrategy", desc.loc),
+        "unknown lightsamplestrategy '" + strategy + "' (known: uniform, power, spatial)");
+  return *named;
+}
+
+// pbrt-v3's "rrthreshold" and "lightsamplestrategy" (default 1 and "spatial" in pbrt-v3 scenes;
+// pbrt-v2's path has neither: every path faces roulette, lights are chosen uniformly, unless the
+// scene gives the parameters).
+std::unique_ptr<SurfaceIntegrator> createPath(const PluginDesc& desc, SceneDialect dialect) {
+  const ParamSet& p = desc.params;
+  const bool v3 = dialect == SceneDialect::PbrtV3;
+  PathSettings s;
+  s.maxDepth = maxDepthParam(desc, false);
+  s.pbrtV3Roulette = v3 || p.find("rrthreshold") != nullptr;
+  s.rrThreshold = p.getOneFloat("rrthreshold", 1);
+  if (!(s.rrThreshold >= 0 && s.rrThreshold < kInfinity))
+    throw SceneError(p.locationOf("rrthreshold", desc.loc), "rrthreshold must be >= 0 and finite");
+  s.lightStrategy = lightStrategyParam(desc, dialect);
+  return std::make_unique<PathIntegrator>(s);
+}
+
 }  // namespace
 
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
                                                            const Camera* camera,
-                                                           const Bounds2i& pixelBounds) {
+                                                           const Bounds2i& pixelBounds,
+                                                           SceneDialect dialect) {
   const ParamSet& p = desc.params;
   if (desc.name == "bidirectional" || desc.name == "bdpt")
     return createBdpt(desc, camera, pixelBounds);
@@ -215,14 +246,15 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
           std::string("unknown strategy '").append(strategy).append("' (known: all, one)"));
     return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
   }
-  if (desc.name == "path") return std::make_unique<PathIntegrator>(maxDepthParam(desc, false));
+  if (desc.name == "path") return createPath(desc, dialect);
   if (desc.name == "volpath") {
     // pbrt-v3's VolPathIntegrator parameters and defaults.
     Float rrThreshold = p.getOneFloat("rrthreshold", 1);
     if (!(rrThreshold >= 0 && rrThreshold < kInfinity))
       throw SceneError(p.locationOf("rrthreshold", desc.loc),
                        "rrthreshold must be >= 0 and finite");
-    return std::make_unique<VolPathIntegrator>(maxDepthParam(desc, false), rrThreshold);
+    return std::make_unique<VolPathIntegrator>(maxDepthParam(desc, false), rrThreshold,
+                                               lightStrategyParam(desc, dialect));
   }
   if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
   if (desc.name == "ambientocclusion") {

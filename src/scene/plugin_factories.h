@@ -13,6 +13,7 @@
 #include "renderers/image_renderer.h"
 #include "samplers/sampler.h"
 #include "scene/scene_description.h"
+#include "scene/scene_dialect.h"
 #include "scene/texture_factory.h"
 
 namespace candela {
@@ -31,10 +32,11 @@ std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* 
 
 // camera: the scene's, for integrators that connect light paths to it ("bidirectional"/"bdpt");
 // such an integrator with a camera that has no importance is a SceneError naming the camera.
-// pixelBounds: the film's, for images an integrator makes besides it.
-std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
-                                                           const Camera* camera = nullptr,
-                                                           const Bounds2i& pixelBounds = {});
+// pixelBounds: the film's, for images an integrator makes besides it. dialect: the scene's, for
+// the defaults of parameters whose pbrt-v3 default differs from pbrt-v2's behaviour.
+std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(
+    const PluginDesc& desc, const Camera* camera = nullptr, const Bounds2i& pixelBounds = {},
+    SceneDialect dialect = SceneDialect::PbrtV2);
 
 // What a whole-image renderer may take from the build.
 struct ImageRendererContext {

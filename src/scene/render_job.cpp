@@ -369,7 +369,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
       warn(desc.renderer.loc,
            "renderer '" + desc.renderer.name + "' is not available; using the sampler renderer");
     job.integrator =
-        createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds());
+        createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds(), dialect);
     // pbrt-v3's sampler integrators keep camera ray differentials at no less than 1/8; its
     // bidirectional integrator, the one that splats light subpaths, scales them by 1/sqrt(spp)
     // alone (pbrt 3e §16.3.1), as do its MLT and SPPM, candela's image renderers.

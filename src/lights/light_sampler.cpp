@@ -1,0 +1,92 @@
+#include "lights/light_sampler.h"
+
+#include <algorithm>
+
+#include "core/sampling.h"
+#include "lights/spatial_light_sampler.h"
+#include "scene/scene.h"
+
+namespace candela {
+
+std::optional<LightSampleStrategy> lightSampleStrategyNamed(const std::string& name) {
+  if (name == "uniform") return LightSampleStrategy::Uniform;
+  if (name == "power") return LightSampleStrategy::Power;
+  if (name == "spatial") return LightSampleStrategy::Spatial;
+  return std::nullopt;
+}
+
+LightIndex::LightIndex(std::span<const Light* const> lights) {
+  for (size_t i = 0; i < lights.size(); ++i) index_.emplace(lights[i], int(i));
+}
+
+int LightIndex::of(const Light& light) const {
+  auto it = index_.find(&light);
+  return it == index_.end() ? -1 : it->second;
+}
+
+namespace {
+
+class UniformLightSampler final : public LightSampler {
+ public:
+  explicit UniformLightSampler(const std::vector<const Light*>& lights) : lights_(lights) {}
+  const Light* sample(const Point3f&, Float u, Float* pmf) const override {
+    int n = int(lights_.size());
+    if (n == 0) return *pmf = 0, nullptr;
+    *pmf = 1 / Float(n);
+    return lights_[size_t(std::min(int(u * Float(n)), n - 1))];
+  }
+  Float pmf(const Point3f&, const Light&) const override {
+    return lights_.empty() ? 0 : 1 / Float(lights_.size());
+  }
+
+ private:
+  std::vector<const Light*> lights_;
+};
+
+// In proportion to each light's power (its luminance); uniformly when no light has any (a scene
+// of lights whose power is unknown or zero).
+class PowerLightSampler final : public LightSampler {
+ public:
+  explicit PowerLightSampler(const std::vector<const Light*>& lights)
+      : lights_(lights), index_(lights), choice_(weights(lights)) {}
+  const Light* sample(const Point3f&, Float u, Float* pmf) const override {
+    if (lights_.empty()) return *pmf = 0, nullptr;
+    return lights_[size_t(choice_.sampleDiscrete(u, pmf))];
+  }
+  Float pmf(const Point3f&, const Light& light) const override {
+    int i = index_.of(light);
+    return i < 0 ? 0 : choice_.discretePmf(i);
+  }
+
+ private:
+  static std::vector<Float> weights(const std::vector<const Light*>& lights) {
+    std::vector<Float> w;
+    for (const Light* light : lights) {
+      Float y = light->power().y();
+      w.push_back(std::isfinite(y) && y > 0 ? y : 0);
+    }
+    bool any = std::any_of(w.begin(), w.end(), [](Float x) { return x > 0; });
+    if (!any) std::fill(w.begin(), w.end(), Float(1));
+    if (w.empty()) w.push_back(1);  // Distribution1D needs a cell; no light is ever returned
+    return w;
+  }
+  std::vector<const Light*> lights_;
+  LightIndex index_;
+  Distribution1D choice_;
+};
+
+}  // namespace
+
+std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy, const Scene& scene) {
+  switch (strategy) {
+    case LightSampleStrategy::Uniform:
+      return std::make_unique<UniformLightSampler>(scene.lights());
+    case LightSampleStrategy::Power:
+      return std::make_unique<PowerLightSampler>(scene.lights());
+    case LightSampleStrategy::Spatial:
+      return std::make_unique<SpatialLightSampler>(scene.lights(), scene.worldBound());
+  }
+  return nullptr;
+}
+
+}  // namespace candela

@@ -1,0 +1,51 @@
+// Which light a shading point samples for next-event estimation: pbrt-v3's three strategies
+// (pbrt 3e §14.3.5 and its lightsamplestrategy parameter). "uniform" picks each light with the
+// same probability; "power" in proportion to the power it emits; "spatial" in proportion to an
+// estimate of the irradiance each light sends into the region of space around the point. All
+// three are unbiased: the estimate divides by the probability of the light chosen, and the
+// integrators' MIS weights use the same probability at the same point.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "lights/light.h"
+
+namespace candela {
+
+class Scene;
+
+enum class LightSampleStrategy { Uniform, Power, Spatial };
+
+// "uniform", "power" or "spatial"; nullopt for anything else.
+std::optional<LightSampleStrategy> lightSampleStrategyNamed(const std::string& name);
+
+class LightSampler {
+ public:
+  virtual ~LightSampler() = default;
+  // The light a point at p samples for u in [0, 1), and the probability of that choice; null when
+  // the scene has no light.
+  virtual const Light* sample(const Point3f& p, Float u, Float* pmf) const = 0;
+  // The probability that sample(p, u) chooses light, over u.
+  virtual Float pmf(const Point3f& p, const Light& light) const = 0;
+};
+
+// The position of each light in the scene's list, for the probability of a given light.
+class LightIndex {
+ public:
+  explicit LightIndex(std::span<const Light* const> lights);
+  int of(const Light& light) const;  // -1 for a light not in the list
+
+ private:
+  std::unordered_map<const Light*, int> index_;
+};
+
+// The sampler of a strategy over the scene's lights (after the lights' preprocess: the power
+// of distant and infinite lights depends on the scene's bounds).
+std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy, const Scene& scene);
+
+}  // namespace candela
