@@ -39,9 +39,13 @@ Float shadingCorrection(const Vector3f& wo, const Vector3f& wi, const Normal3f& 
 }  // namespace
 
 BdptIntegrator::BdptIntegrator(const CameraImportance& camera, int maxDepth,
-                               LightChoice lightChoice, Visualize visualize,
-                               const Bounds2i& pixelBounds)
-    : camera_(camera), maxDepth_(maxDepth), lightChoice_(lightChoice), visualize_(visualize) {
+                               LightSampleStrategy lightStrategy, Visualize visualize,
+                               const Bounds2i& pixelBounds, const Point3f& lightReference)
+    : camera_(camera),
+      maxDepth_(maxDepth),
+      lightStrategy_(lightStrategy),
+      lightReference_(lightReference),
+      visualize_(visualize) {
   if (visualize_ == Visualize::None) return;
   pixelBox_ = std::make_unique<BoxFilter>(Vector2f(0.5f, 0.5f));
   int n = strategyIndex(maxDepth_ + 1, 1) + 1;
@@ -82,23 +86,12 @@ std::vector<NamedImage> BdptIntegrator::extraImages(const Film& film) const {
 
 void BdptIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
   lights_ = scene.lights();
-  lightIndex_.clear();
   scene.worldBound().boundingSphere(&sceneCenter_, &sceneRadius_);
-  std::vector<Float> weights;
-  for (size_t i = 0; i < lights_.size(); ++i) {
-    lightIndex_[lights_[i]] = int(i);
-    Float w = lightChoice_ == LightChoice::Power ? std::max(Float(0), lights_[i]->power().y()) : 1;
-    weights.push_back(std::isfinite(w) ? w : 0);
-  }
-  // Lights of no power would never be chosen: fall back to a uniform choice.
-  if (std::accumulate(weights.begin(), weights.end(), Float(0)) <= 0)
-    std::fill(weights.begin(), weights.end(), Float(1));
-  lightDistribution_ = lights_.empty() ? nullptr : std::make_unique<Distribution1D>(weights);
+  lightSampler_ = createLightSampler(lightStrategy_, scene);
 }
 
 Float BdptIntegrator::lightPdf(const Light* light) const {
-  auto it = lightIndex_.find(light);
-  return it == lightIndex_.end() ? 0 : lightDistribution_->discretePmf(it->second);
+  return lightSampler_->pmf(lightReference_, *light);
 }
 
 Float BdptIntegrator::infiniteLightDensity(const Vector3f& w) const {
@@ -266,7 +259,8 @@ int BdptIntegrator::lightSubpath(const Scene& scene, IntegratorContext& ctx, Flo
   Point2f uPos = ctx.sampler.get2D(), uDir = ctx.sampler.get2D();
   if (lights_.empty()) return 0;
   Float pmf = 0;
-  const Light* light = lights_[lightDistribution_->sampleDiscrete(uLight, &pmf)];
+  const Light* light = lightSampler_->sample(lightReference_, uLight, &pmf);
+  if (!light) return 0;
   Ray ray;
   Normal3f nLight;
   Float pdfPos = 0, pdfDir = 0;
@@ -330,7 +324,8 @@ Spectrum BdptIntegrator::connect(const Scene& scene, PathVertex* light, PathVert
     Point2f uLight = ctx.sampler.get2D();
     if (!pt.connectible() || lights_.empty()) return L;
     Float pmf = 0;
-    const Light* l = lights_[lightDistribution_->sampleDiscrete(uChoice, &pmf)];
+    const Light* l = lightSampler_->sample(lightReference_, uChoice, &pmf);
+    if (!l) return L;
     Vector3f wi;
     Float pdf = 0;
     VisibilityTester vis;

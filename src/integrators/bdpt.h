@@ -16,18 +16,23 @@
 #include "filters/filter.h"
 #include "integrators/bdpt_vertex.h"
 #include "integrators/integrator.h"
+#include "lights/light_sampler.h"
 
 namespace candela {
 
 class BdptIntegrator : public SurfaceIntegrator {
  public:
-  enum class LightChoice { Uniform, Power };
   // pbrt-v3's visualizestrategies (each strategy's own estimate, unweighted) and visualizeweights
   // (its MIS-weighted share): one image per (s, t), bdpt_dDD_sSS_tTT.exr.
   enum class Visualize { None, Strategies, Weights };
   // pixelBounds: the film's, for the visualisation images.
-  BdptIntegrator(const CameraImportance& camera, int maxDepth, LightChoice lightChoice,
-                 Visualize visualize = Visualize::None, const Bounds2i& pixelBounds = {});
+  // lightStrategy: how the light a light subpath starts from is chosen (pbrt-v3's
+  // lightsamplestrategy, "power" by default); "spatial" takes the distribution of the voxel that
+  // holds lightReference (the camera's position: pbrt-v3 looks it up at each sample's camera
+  // vertex, the same voxel but for lenses wider than one).
+  BdptIntegrator(const CameraImportance& camera, int maxDepth, LightSampleStrategy lightStrategy,
+                 Visualize visualize = Visualize::None, const Bounds2i& pixelBounds = {},
+                 const Point3f& lightReference = Point3f(0, 0, 0));
   ~BdptIntegrator() override;
   void preprocess(const Scene& scene, const PreprocessOptions&) override;
   bool splats() const override { return true; }
@@ -102,10 +107,10 @@ class BdptIntegrator : public SurfaceIntegrator {
 
   const CameraImportance& camera_;
   int maxDepth_;
-  LightChoice lightChoice_;
+  LightSampleStrategy lightStrategy_;
+  Point3f lightReference_;
   std::vector<const Light*> lights_;
-  std::unique_ptr<Distribution1D> lightDistribution_;
-  std::unordered_map<const Light*, int> lightIndex_;
+  std::unique_ptr<LightSampler> lightSampler_;
   Point3f sceneCenter_{0, 0, 0};
   Float sceneRadius_ = 0;
   Visualize visualize_;

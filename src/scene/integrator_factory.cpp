@@ -105,26 +105,27 @@ std::unique_ptr<SurfaceIntegrator> createIgi(const PluginDesc& desc) {
 namespace {
 
 // pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and
-// pbrt-v3 "bdpt" (maxdepth, lightsampler, visualizestrategies, visualizeweights).
+// pbrt-v3 "bdpt" (maxdepth, lightsamplestrategy, visualizestrategies, visualizeweights).
 std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Camera* camera,
                                               const Bounds2i& pixelBounds) {
   const ParamSet& p = desc.params;
   int maxDepth = maxDepthParam(desc, false);
-  BdptIntegrator::LightChoice choice = BdptIntegrator::LightChoice::Power;
+  LightSampleStrategy strategy = LightSampleStrategy::Power;
   BdptIntegrator::Visualize visualize = BdptIntegrator::Visualize::None;
   if (desc.name == "bdpt") {
     // pbrt-v3: the weighted images win when both are asked for.
     if (p.getOneBool("visualizestrategies", false))
       visualize = BdptIntegrator::Visualize::Strategies;
     if (p.getOneBool("visualizeweights", false)) visualize = BdptIntegrator::Visualize::Weights;
-    std::string sampler = p.getOneString("lightsampler", "power");
-    if (sampler == "uniform")
-      choice = BdptIntegrator::LightChoice::Uniform;
-    else if (sampler != "power")
-      throw SceneError(p.locationOf("lightsampler", desc.loc),
-                       std::string("unknown lightsampler '")
-                           .append(sampler)
-                           .append("' (known: power, uniform)"));
+    // pbrt-v3's name, or "lightsampler", candela's before it.
+    const char* name = p.find("lightsamplestrategy") ? "lightsamplestrategy" : "lightsampler";
+    std::string sampler = p.getOneString(name, "power");
+    std::optional<LightSampleStrategy> named = lightSampleStrategyNamed(sampler);
+    if (!named)
+      throw SceneError(
+          p.locationOf(name, desc.loc),
+          "unknown " + std::string(name) + " '" + sampler + "' (known: uniform, power, spatial)");
+    strategy = *named;
   }
   const CameraImportance* importance = camera ? camera->importance() : nullptr;
   if (!importance)
@@ -133,7 +134,17 @@ std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Came
                                    .append("' connects light paths to the camera, which the '")
                                    .append(camera ? camera->kind() : "(none)")
                                    .append("' camera does not support (use 'perspective')"));
-  return std::make_unique<BdptIntegrator>(*importance, maxDepth, choice, visualize, pixelBounds);
+  // The camera's position, where "spatial" looks up its distribution: the lens point of the ray
+  // through the film's centre.
+  CameraSample centre;
+  centre.pFilm = Point2f(Float(pixelBounds.pMin.x + pixelBounds.pMax.x) / 2,
+                         Float(pixelBounds.pMin.y + pixelBounds.pMax.y) / 2);
+  centre.pLens = Point2f(0.5f, 0.5f);
+  Ray ray;
+  Point3f position(0, 0, 0);
+  if (camera->generateRay(centre, &ray) > 0) position = importance->lensPoint(ray);
+  return std::make_unique<BdptIntegrator>(*importance, maxDepth, strategy, visualize, pixelBounds,
+                                          position);
 }
 
 // dipolesubsurface's pointsfile, in pbrt-v2's format: eight numbers per point — position (3),

@@ -1,7 +1,8 @@
 // Bidirectional path tracing: the image is the same bits for 1 and 2 threads and tile sizes 8 and
 // 16, and a crop window renders the same bits as that region of the full image (light subpaths of
 // pixels outside the crop still splat into it); scene errors are located: a negative maxdepth, an
-// unknown lightsampler, a camera without importance (named in the message).
+// unknown lightsamplestrategy (or lightsampler), a camera without importance (named in the
+// message).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -95,6 +96,9 @@ TEST(BdptErrors, UnknownLightSamplerIsLocated) {
   expectSceneError(std::string("Camera \"perspective\"\n") +
                        "Integrator \"bdpt\" \"string lightsampler\" \"bvh\"\n" + kWorld,
                    ":2:", "unknown lightsampler 'bvh'");
+  expectSceneError(std::string("Camera \"perspective\"\n") +
+                       "Integrator \"bdpt\"\n  \"string lightsamplestrategy\" \"bvh\"\n" + kWorld,
+                   ":3:", "unknown lightsamplestrategy 'bvh' (known: uniform, power, spatial)");
 }
 
 TEST(BdptErrors, CameraWithoutImportanceIsNamed) {

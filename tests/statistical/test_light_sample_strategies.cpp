@@ -1,10 +1,10 @@
-// pbrt-v3's lightsamplestrategy for the path and volpath integrators: a strip of ground under six
-// disk lights facing it, of radiance 4 to 128, a matte sphere among them, path tracing to depth 3
-// (so that paths also meet the lights after a bounce, where path's MIS weight takes the choice
+// pbrt-v3's lightsamplestrategy for the path, volpath and bdpt integrators: a strip of ground under
+// six disk lights facing it, of radiance 4 to 128, a matte sphere among them, path tracing to depth
+// 3 (so that paths also meet the lights after a bounce, where path's MIS weight takes the choice
 // probability at the previous vertex). For 8 seeds per strategy (16 samples per pixel), the image
 // means of "power" and "spatial" agree with "uniform": Welch's t of the two samples of 8 means
 // stays below 5.41, the two-sided 0.001 quantile of Student's t with 7 degrees of freedom, the
-// fewest Welch-Satterthwaite can give here (family-wise 0.004 over the four). And "spatial",
+// fewest Welch-Satterthwaite can give here (family-wise 0.006 over the six). And "spatial",
 // whose choice follows the lights nearest each point, has less than 0.6 of the per-pixel variance
 // of "uniform" (measured 0.43 for path, 0.18 for volpath; "power" 0.81 and 0.43). With path's
 // MIS weight of an emission hit taking the uniform choice probability while "spatial" chose the
@@ -103,10 +103,15 @@ TEST_P(LightSampleStrategies, PowerAndSpatialAreUnbiasedAndSpatialIsLessNoisyAmo
             << "x, spatial " << spatial.pixelVariance / uniform.pixelVariance << "x\n";
   EXPECT_LT(tPower, 5.41);
   EXPECT_LT(tSpatial, 5.41);
-  EXPECT_LT(spatial.pixelVariance, 0.6 * uniform.pixelVariance);
+  // bdpt's light subpaths start from the distribution of the camera's voxel, above these
+  // downward-facing lights, which send it nothing: every light gets the floor, as uniform.
+  if (integrator != "bdpt") {
+    EXPECT_LT(spatial.pixelVariance, 0.6 * uniform.pixelVariance);
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(PathAndVolpath, LightSampleStrategies, testing::Values("path", "volpath"));
+INSTANTIATE_TEST_SUITE_P(Integrators, LightSampleStrategies,
+                         testing::Values("path", "volpath", "bdpt"));
 
 }  // namespace
 }  // namespace candela

@@ -40,7 +40,7 @@ RayStats coverageAlpha(const Scene& scene, const Camera& camera, Film& film) {
 ProgressiveResult MetropolisRenderer::render(const Scene& scene, const Camera& camera, Film& film,
                                              const ProgressiveOptions& options) const {
   // The chains' paths: bdpt's subpaths and connections, its light choice by power.
-  BdptIntegrator paths(importance_, settings_.maxDepth, BdptIntegrator::LightChoice::Power);
+  BdptIntegrator paths(importance_, settings_.maxDepth, LightSampleStrategy::Power);
   paths.preprocess(scene, PreprocessOptions{});
   ProgressiveResult result;
   if (directSamples_ > 0) {
