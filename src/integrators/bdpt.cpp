@@ -1,7 +1,5 @@
 #include "integrators/bdpt.h"
 
-#include <numeric>
-
 #include <cstdio>
 #include "accel/primitive.h"
 

@@ -137,7 +137,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
     specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
     if (settings_.pbrtV3Roulette && (sampledType & kSpecular) && (sampledType & kTransmission)) {
-      // Entering the denser side (wo on the side the normal points to) scales radiance by eta^2.
+      // A refraction scales beta by 1 / eta^2 when the path goes in (wo on the side the normal
+      // points to) and by eta^2 when it comes out (pbrt 3e §8.2.3); etaScale undoes that.
       Float eta2 = bsdf->eta * bsdf->eta;
       etaScale *= dot(isect.wo, isect.n) > 0 ? eta2 : 1 / eta2;
     }
@@ -150,6 +151,7 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     // Russian roulette: continue with probability tied to the throughput (pbrt 2e §15.3 uses
     // min(0.5, y); the throughput's largest channel wastes less on coloured paths). Not before
     // the last segment, which only looks for emission: it would add variance to save one ray.
+    // pbrt-v3's rule (path.h) spares paths whose eta-scaled throughput reaches rrthreshold.
     if (bounces >= rrStartDepth_ && bounces + 1 < maxDepth_) {
       Float survival = beta.maxComponent();
       bool faces = true;

@@ -116,8 +116,9 @@ Spectrum sampleOneLight(const Interaction& it, const Scatterer& scatterer,
   Float uComponent = sampler.get1D();
   if (nLights == 0) return Spectrum(0);
   Float choicePdf = 1 / Float(nLights);
-  const Light* chosen = s.scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
-  if (s.lightSampler) chosen = s.lightSampler->sample(it.p, uChoice, &choicePdf);
+  const Light* chosen = s.lightSampler
+                            ? s.lightSampler->sample(it.p, uChoice, &choicePdf)
+                            : s.scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
   if (!chosen || !(choicePdf > 0)) return Spectrum(0);
   const Light& light = *chosen;
   Spectrum ld(0);

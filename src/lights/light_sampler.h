@@ -1,5 +1,6 @@
-// Which light a shading point samples for next-event estimation: pbrt-v3's three strategies
-// (pbrt 3e §14.3.5 and its lightsamplestrategy parameter). "uniform" picks each light with the
+// Which light a shading point samples for next-event estimation: the three strategies of
+// pbrt-v3's lightsamplestrategy parameter (the book picks one light uniformly, pbrt 3e §14.3;
+// pbrt-v3's later code added the other two). "uniform" picks each light with the
 // same probability; "power" in proportion to the power it emits; "spatial" in proportion to an
 // estimate of the irradiance each light sends into the region of space around the point. All
 // three are unbiased: the estimate divides by the probability of the light chosen, and the

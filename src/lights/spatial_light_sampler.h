@@ -1,4 +1,4 @@
-// pbrt-v3's "spatial" light sampling (pbrt 3e §14.3.5, its SpatialLightDistribution): the scene's
+// pbrt-v3's "spatial" light sampling (its lightsamplestrategy's default): the scene's
 // bounds cut into voxels, up to 64 along the longest axis, and for each voxel a distribution over
 // the lights in proportion to the irradiance they send to 128 points spread through it by the
 // Halton sequence (one light sample each, no visibility). No light gets less than a thousandth
