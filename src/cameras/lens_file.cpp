@@ -13,6 +13,10 @@ std::vector<LensInterface> readLensFile(const std::string& path) {
     auto fail = [&](const std::string& what) {
       throw FileError(path + ":" + std::to_string(lineNo), what);
     };
+    if (interfaces.size() == kMaxLensInterfaces)
+      fail("more than " + std::to_string(kMaxLensInterfaces) +
+           " interfaces (real lenses have a few dozen; the camera traces its exit pupil through "
+           "every one)");
     if (v.size() != 4)
       fail(
           "expected 4 numbers (curvature radius, thickness, index of refraction, aperture "

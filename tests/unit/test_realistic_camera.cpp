@@ -17,6 +17,7 @@
 #include "support/param_items.h"
 #include "support/parameter_errors.h"
 #include "support/render_scene.h"
+#include "support/temp_dir.h"
 
 namespace candela {
 namespace {
@@ -381,6 +382,24 @@ TEST(RealisticCamera, LensFileErrorsNameTheLine) {
           << e.what();
       EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
     }
+  }
+}
+
+TEST(RealisticCamera, LensFilesOfMoreThanAThousandInterfacesAreRefusedAtTheLine) {
+  TempDir dir("lens_count");
+  auto write = [&](int lines) {
+    std::string text = "50 5 1.5 20\n";
+    for (int i = 1; i < lines; ++i) text += "0 0.001 0 20\n";
+    return dir.write("lens" + std::to_string(lines) + ".dat", text);
+  };
+  EXPECT_EQ(readLensFile(write(1000)).size(), 1000u);
+  try {
+    readLensFile(write(1001));
+    ADD_FAILURE() << "no error";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("lens1001.dat:1001"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("more than 1000 interfaces"), std::string::npos)
+        << e.what();
   }
 }
 
