@@ -258,7 +258,6 @@ int BdptIntegrator::lightSubpath(const Scene& scene, IntegratorContext& ctx, Flo
   if (lights_.empty()) return 0;
   Float pmf = 0;
   const Light* light = lightSampler_->sample(lightReference_, uLight, &pmf);
-  if (!light) return 0;
   Ray ray;
   Normal3f nLight;
   Float pdfPos = 0, pdfDir = 0;
@@ -323,7 +322,6 @@ Spectrum BdptIntegrator::connect(const Scene& scene, PathVertex* light, PathVert
     if (!pt.connectible() || lights_.empty()) return L;
     Float pmf = 0;
     const Light* l = lightSampler_->sample(lightReference_, uChoice, &pmf);
-    if (!l) return L;
     Vector3f wi;
     Float pdf = 0;
     VisibilityTester vis;

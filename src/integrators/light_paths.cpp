@@ -1,11 +1,11 @@
 #include "integrators/light_paths.h"
 
+#include "lights/light_sampler.h"
+
 namespace candela {
 
 std::optional<Distribution1D> lightPowerDistribution(const Scene& scene) {
-  std::vector<Float> power;
-  for (const Light* light : scene.lights()) power.push_back(std::max(Float(0), light->power().y()));
-  Distribution1D lights(std::move(power));
+  Distribution1D lights(lightPowerWeights(scene.lights()));
   if (!(lights.integral() > 0)) return std::nullopt;
   return lights;
 }

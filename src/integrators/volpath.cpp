@@ -119,7 +119,7 @@ Spectrum sampleOneLight(const Interaction& it, const Scatterer& scatterer,
   const Light* chosen = s.lightSampler
                             ? s.lightSampler->sample(it.p, uChoice, &choicePdf)
                             : s.scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
-  if (!chosen || !(choicePdf > 0)) return Spectrum(0);
+  if (!(choicePdf > 0)) return Spectrum(0);
   const Light& light = *chosen;
   Spectrum ld(0);
   Vector3f wi;

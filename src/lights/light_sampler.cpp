@@ -24,6 +24,16 @@ int LightIndex::of(const Light& light) const {
   return it == index_.end() ? -1 : it->second;
 }
 
+std::vector<Float> lightPowerWeights(std::span<const Light* const> lights) {
+  std::vector<Float> w;
+  w.reserve(lights.size());
+  for (const Light* light : lights) {
+    Float y = light->power().y();
+    w.push_back(std::isfinite(y) && y > 0 ? y : 0);
+  }
+  return w;
+}
+
 namespace {
 
 class UniformLightSampler final : public LightSampler {
@@ -60,11 +70,7 @@ class PowerLightSampler final : public LightSampler {
 
  private:
   static std::vector<Float> weights(const std::vector<const Light*>& lights) {
-    std::vector<Float> w;
-    for (const Light* light : lights) {
-      Float y = light->power().y();
-      w.push_back(std::isfinite(y) && y > 0 ? y : 0);
-    }
+    std::vector<Float> w = lightPowerWeights(lights);
     bool any = std::any_of(w.begin(), w.end(), [](Float x) { return x > 0; });
     if (!any) std::fill(w.begin(), w.end(), Float(1));
     if (w.empty()) w.push_back(1);  // Distribution1D needs a cell; no light is ever returned

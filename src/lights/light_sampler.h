@@ -45,6 +45,10 @@ class LightIndex {
   std::unordered_map<const Light*, int> index_;
 };
 
+// Each light's power as a weight for choosing it: the luminance of power(), 0 where that is not
+// a finite positive number. (Also the light choice of photon shooting and light paths.)
+std::vector<Float> lightPowerWeights(std::span<const Light* const> lights);
+
 // The sampler of a strategy over the scene's lights (after the lights' preprocess: the power
 // of distant and infinite lights depends on the scene's bounds).
 std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy, const Scene& scene);

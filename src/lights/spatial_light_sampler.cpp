@@ -57,11 +57,16 @@ Distribution1D SpatialLightSampler::makeDistribution(int x, int y, int z) const 
       if (std::isfinite(e) && e > 0) contribution[j] += e;
     }
   }
+  // Contributions whose sum overflows tell nothing apart: uniform. Otherwise the floor, 1 when no
+  // light reaches any point.
   Float sum = std::accumulate(contribution.begin(), contribution.end(), Float(0));
-  Float mean = sum / Float(kVoxelPoints * std::max<size_t>(1, lights_.size()));
-  Float floor = mean > 0 && std::isfinite(mean) ? kFloorFraction * mean : 1;
-  if (!std::isfinite(sum)) std::fill(contribution.begin(), contribution.end(), Float(1));
-  for (Float& c : contribution) c = std::max(c, floor);
+  if (!std::isfinite(sum)) {
+    std::fill(contribution.begin(), contribution.end(), Float(1));
+  } else {
+    Float mean = sum / Float(kVoxelPoints * std::max<size_t>(1, lights_.size()));
+    Float floor = mean > 0 ? kFloorFraction * mean : 1;
+    for (Float& c : contribution) c = std::max(c, floor);
+  }
   if (contribution.empty()) contribution.push_back(1);
   return Distribution1D(std::move(contribution));
 }

@@ -104,6 +104,36 @@ std::unique_ptr<SurfaceIntegrator> createIgi(const PluginDesc& desc) {
 
 namespace {
 
+// A light sample strategy parameter (lightsamplestrategy: uniform, power or spatial), a located
+// SceneError for any other name.
+LightSampleStrategy lightStrategyParam(const PluginDesc& desc, const char* name,
+                                       const char* byDefault) {
+  const ParamSet& p = desc.params;
+  std::string strategy = p.getOneString(name, byDefault);
+  std::optional<LightSampleStrategy> named = lightSampleStrategyNamed(strategy);
+  if (!named)
+    throw SceneError(
+        p.locationOf(name, desc.loc),
+        "unknown " + std::string(name) + " '" + strategy + "' (known: uniform, power, spatial)");
+  return *named;
+}
+
+// pbrt-v3's "lightsamplestrategy" of path and volpath: "spatial" in pbrt-v3 scenes that name none,
+// else uniform (pbrt-v2's choice).
+LightSampleStrategy pathLightStrategy(const PluginDesc& desc, SceneDialect dialect) {
+  return lightStrategyParam(desc, "lightsamplestrategy",
+                            dialect == SceneDialect::PbrtV3 ? "spatial" : "uniform");
+}
+
+// pbrt-v3's "rrthreshold" of path and volpath (default 1).
+Float rrThresholdParam(const PluginDesc& desc) {
+  Float t = desc.params.getOneFloat("rrthreshold", 1);
+  if (!(t >= 0 && t < kInfinity))
+    throw SceneError(desc.params.locationOf("rrthreshold", desc.loc),
+                     "rrthreshold must be >= 0 and finite");
+  return t;
+}
+
 // pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and
 // pbrt-v3 "bdpt" (maxdepth, lightsamplestrategy, visualizestrategies, visualizeweights).
 std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Camera* camera,
@@ -119,13 +149,7 @@ std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Came
     if (p.getOneBool("visualizeweights", false)) visualize = BdptIntegrator::Visualize::Weights;
     // pbrt-v3's name, or "lightsampler", candela's before it.
     const char* name = p.find("lightsamplestrategy") ? "lightsamplestrategy" : "lightsampler";
-    std::string sampler = p.getOneString(name, "power");
-    std::optional<LightSampleStrategy> named = lightSampleStrategyNamed(sampler);
-    if (!named)
-      throw SceneError(
-          p.locationOf(name, desc.loc),
-          "unknown " + std::string(name) + " '" + sampler + "' (known: uniform, power, spatial)");
-    strategy = *named;
+    strategy = lightStrategyParam(desc, name, "power");
   }
   const CameraImportance* importance = camera ? camera->importance() : nullptr;
   if (!importance)
@@ -204,20 +228,6 @@ std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc
   return std::make_unique<DipoleSubsurfaceIntegrator>(s);
 }
 
-// pbrt-v3's "lightsamplestrategy" of path and volpath: "spatial" in pbrt-v3 scenes that name none,
-// else uniform (pbrt-v2's choice).
-LightSampleStrategy lightStrategyParam(const PluginDesc& desc, SceneDialect dialect) {
-  const ParamSet& p = desc.params;
-  std::string strategy = p.getOneString("lightsamplestrategy",
-                                        dialect == SceneDialect::PbrtV3 ? "spatial" : "uniform");
-  std::optional<LightSampleStrategy> named = lightSampleStrategyNamed(strategy);
-  if (!named)
-    throw SceneError(
-        p.locationOf("lightsamplestrategy", desc.loc),
-        "unknown lightsamplestrategy '" + strategy + "' (known: uniform, power, spatial)");
-  return *named;
-}
-
 // pbrt-v3's "rrthreshold" and "lightsamplestrategy" (default 1 and "spatial" in pbrt-v3 scenes;
 // pbrt-v2's path has neither: every path faces roulette, lights are chosen uniformly, unless the
 // scene gives the parameters).
@@ -227,10 +237,8 @@ std::unique_ptr<SurfaceIntegrator> createPath(const PluginDesc& desc, SceneDiale
   PathSettings s;
   s.maxDepth = maxDepthParam(desc, false);
   s.pbrtV3Roulette = v3 || p.find("rrthreshold") != nullptr;
-  s.rrThreshold = p.getOneFloat("rrthreshold", 1);
-  if (!(s.rrThreshold >= 0 && s.rrThreshold < kInfinity))
-    throw SceneError(p.locationOf("rrthreshold", desc.loc), "rrthreshold must be >= 0 and finite");
-  s.lightStrategy = lightStrategyParam(desc, dialect);
+  s.rrThreshold = rrThresholdParam(desc);
+  s.lightStrategy = pathLightStrategy(desc, dialect);
   return std::make_unique<PathIntegrator>(s);
 }
 
@@ -260,12 +268,8 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
   if (desc.name == "path") return createPath(desc, dialect);
   if (desc.name == "volpath") {
     // pbrt-v3's VolPathIntegrator parameters and defaults.
-    Float rrThreshold = p.getOneFloat("rrthreshold", 1);
-    if (!(rrThreshold >= 0 && rrThreshold < kInfinity))
-      throw SceneError(p.locationOf("rrthreshold", desc.loc),
-                       "rrthreshold must be >= 0 and finite");
-    return std::make_unique<VolPathIntegrator>(maxDepthParam(desc, false), rrThreshold,
-                                               lightStrategyParam(desc, dialect));
+    return std::make_unique<VolPathIntegrator>(maxDepthParam(desc, false), rrThresholdParam(desc),
+                                               pathLightStrategy(desc, dialect));
   }
   if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
   if (desc.name == "ambientocclusion") {
