@@ -9,6 +9,7 @@
 
 #include "accel/embree/embree_device.h"
 #include "app/cli_options.h"
+#include "app/compare_command.h"
 #include "app/error_log.h"
 #include "app/frame_writer.h"
 #include "app/merge_command.h"
@@ -206,6 +207,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
 
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "merge") return runMerge(argc - 1, argv + 1);
+  if (argc > 1 && std::string(argv[1]) == "compare") return runCompare(argc - 1, argv + 1);
   CliOptions cli;
   if (auto code = parseCommandLine(argc, argv, &cli)) return *code;
   if (cli.sceneFiles.empty()) cli.sceneFiles.push_back("-");

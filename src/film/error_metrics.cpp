@@ -1,6 +1,10 @@
 #include "film/error_metrics.h"
 
+#include <algorithm>
+#include <array>
+#include <functional>
 #include <stdexcept>
+#include <vector>
 
 namespace candela {
 
@@ -88,6 +92,73 @@ ErrorMetrics estimateFromVariance(const Film& film) {
   m.mse = acc.n > 0 ? meanVar / double(acc.n) : 0;
   m.rmse = std::sqrt(m.mse);
   return m;
+}
+
+namespace {
+
+// The R, G, B channel indices of an image, or a clear refusal naming its role.
+std::array<int, 3> rgbChannels(const ImageBuffer& image, const char* role) {
+  std::array<int, 3> ch{image.channelIndex("R"), image.channelIndex("G"), image.channelIndex("B")};
+  if (ch[0] < 0 || ch[1] < 0 || ch[2] < 0)
+    throw std::invalid_argument(std::string("the ") + role + " has no R, G, B channels");
+  return ch;
+}
+
+void checkSameSize(const ImageBuffer& a, const ImageBuffer& b, const char* role) {
+  if (a.width != b.width || a.height != b.height)
+    throw std::invalid_argument(std::string("the ") + role + " is " + std::to_string(b.width) +
+                                "x" + std::to_string(b.height) + ", the image " +
+                                std::to_string(a.width) + "x" + std::to_string(a.height));
+}
+
+}  // namespace
+
+ImageComparison compareImages(const ImageBuffer& image, const ImageBuffer& reference,
+                              const ImageBuffer* secondReference, int worstPixels) {
+  checkSameSize(image, reference, "reference");
+  if (secondReference) checkSameSize(image, *secondReference, "second reference");
+  const std::array<int, 3> ci = rgbChannels(image, "image"),
+                           cr = rgbChannels(reference, "reference");
+  std::array<int, 3> c2{};
+  if (secondReference) c2 = rgbChannels(*secondReference, "second reference");
+  ImageComparison out;
+  const size_t n = image.pixelCount();
+  std::vector<double> pixelError;
+  pixelError.reserve(n);
+  double sq = 0, rel = 0, noise = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      double e = 0;
+      for (int c = 0; c < 3; ++c) {
+        double v = image.at(x, y, ci[c]), r = reference.at(x, y, cr[c]);
+        double d = 0;
+        if (secondReference) {
+          double r2 = secondReference->at(x, y, c2[size_t(c)]);
+          d = r - r2;
+          r = (r + r2) / 2;
+        }
+        double denom = r * r + kRelMseEpsilon;
+        sq += (v - r) * (v - r);
+        e += (v - r) * (v - r) / denom;
+        noise += d * d / 4 / denom;
+        out.mean[c] += v / double(n);
+        out.referenceMean[c] += r / double(n);
+      }
+      rel += e;
+      pixelError.push_back(e);
+    }
+  const double values = 3 * double(n);
+  out.relmseRaw = rel / values;
+  out.referenceNoise = noise / values;
+  out.relmse = out.relmseRaw - out.referenceNoise;
+  out.mse = sq / values;
+  out.worstPixels = std::clamp(worstPixels, 0, int(n));
+  std::partial_sort(pixelError.begin(), pixelError.begin() + out.worstPixels, pixelError.end(),
+                    std::greater<>());
+  double worst = 0;
+  for (int i = 0; i < out.worstPixels; ++i) worst += pixelError[size_t(i)];
+  out.outlierShare = rel > 0 ? worst / rel : 0;
+  return out;
 }
 
 }  // namespace candela

@@ -33,4 +33,20 @@ ErrorMetrics compareToReference(const Film& film, const ImageBuffer& reference);
 // while any pixel has fewer than two samples.
 ErrorMetrics estimateFromVariance(const Film& film);
 
+// Two finished images of one size (R, G, B looked up by name), as `candela compare` measures
+// renderers against each other: relMSE against the mean of one or two references; with two
+// (independent renders of the same scene) also their own noise, the relMSE their mean adds to
+// any image measured against it, E[(r1 - r2)^2] / 4 per value, which `relmse` then has taken
+// off (relmseRaw keeps it). outlierShare is the fraction of relMSE (before that correction) in
+// the worstPixels pixels of largest relative squared error summed over R, G, B: fireflies show
+// as a few pixels holding most of it. Throws std::invalid_argument for mismatched images.
+struct ImageComparison {
+  double relmse = 0, relmseRaw = 0, referenceNoise = 0, mse = 0;
+  double outlierShare = 0;
+  int worstPixels = 0;
+  double mean[3] = {0, 0, 0}, referenceMean[3] = {0, 0, 0};
+};
+ImageComparison compareImages(const ImageBuffer& image, const ImageBuffer& reference,
+                              const ImageBuffer* secondReference, int worstPixels);
+
 }  // namespace candela

@@ -247,6 +247,7 @@ int BdptIntegrator::cameraSubpath(const RayDifferential& ray, const Scene& scene
   c.beta = Spectrum(1);
   Float pdfPos = 0, pdfDir = 0;
   camera_.pdfWe(ray, &pdfPos, &pdfDir);
+  c.onFilm = pdfDir > 0;
   return randomWalk(ray, Spectrum(1), pdfDir, true, scene, ctx, path,
                     maxVertices < 0 ? maxDepth_ + 2 : maxVertices);
 }
@@ -359,7 +360,8 @@ Spectrum BdptIntegrator::connect(const Scene& scene, PathVertex* light, PathVert
 // and p_{s'+1} / p_s' = pL[s'] / pE[s'], pL and pE being the area densities of making x_s' from
 // the light side and from the camera side. The weight is 1 / Σ (p_s' / p_s)² over the strategies
 // that exist for this path: s' = 0 needs a light that is not a delta; other s' join x_{s'-1} and
-// x_s', so neither may be specular; (1, 1) needs an area light.
+// x_s', so neither may be specular; (1, 1) needs an area light; t' = 1 (s' = n - 1) needs the
+// camera ray on the film (a pixel filter's reach past the edges is the camera strategies' alone).
 Float BdptIntegrator::misWeight(const PathVertex* light, const PathVertex* camera,
                                 const PathVertex& sampled, int s, int t) const {
   const int n = s + t;
@@ -394,7 +396,8 @@ Float BdptIntegrator::misWeight(const PathVertex* light, const PathVertex* camer
   bool areaOrigin = origin.areaLight != nullptr && !origin.atInfinity();
   auto exists = [&](int sp) {
     if (sp == 0) return !deltaLight && (origin.areaLight || origin.atInfinity());
-    if (sp == 1 && n == 2) return areaOrigin;
+    if (sp == 1 && n == 2) return areaOrigin && x[n - 1]->onFilm;
+    if (sp == n - 1 && !x[n - 1]->onFilm) return false;  // t' = 1 lands off the film
     return !delta[sp - 1] && !delta[sp];
   };
   Float sum = 0, r = 1;

@@ -23,6 +23,10 @@ struct PathVertex {
   // A Light vertex for what a camera ray that escaped sees: every infinite light at once.
   bool environment = false;
   bool delta = false;  // scattered by a specular BSDF: cannot be connected
+  // A Camera vertex whose ray lands on the film. A pixel filter wider than a pixel draws camera
+  // rays past the film's edges too; no light path connected to the lens lands there (the camera's
+  // importance is zero off the film), so for such a path that strategy does not exist.
+  bool onFilm = true;
   Float pdfFwd = 0, pdfRev = 0;
 
   const Point3f& p() const { return it.p; }

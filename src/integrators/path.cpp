@@ -44,7 +44,7 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
                                   IntegratorContext& ctx, bool firstEmission, Float* alpha,
                                   Float* hitDistance, const FirstHit* first) const {
   Spectrum l(0), beta(1);
-  // The radiance scaling of the refractions the path passed, for pbrt-v3's roulette.
+  // The radiance scaling of the refractions the path passed, which the roulette leaves out.
   Float etaScale = 1;
   RayDifferential ray(cameraRay);
   bool specularBounce = false;
@@ -113,10 +113,10 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     }
     Vector3f wi;
     BxDFType sampledType;
-    // The value that picks a component; a BSDF of one component does not read it (a lone
-    // Lambertian, most vertices), so it is passed over there, not computed.
+    // The value that picks a component; a BSDF of one component that makes no choice of its own
+    // does not read it (a lone Lambertian, most vertices), so it is passed over there.
     Float uComponent = 0;
-    if (bsdf->numComponents() > 1)
+    if (bsdf->readsComponentValue())
       uComponent = ctx.get1D();
     else
       ctx.skip1D();
@@ -136,7 +136,7 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     if (f.isBlack() || scatteringPdf == 0) break;
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
     specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
-    if (settings_.pbrtV3Roulette && (sampledType & kSpecular) && (sampledType & kTransmission)) {
+    if ((sampledType & kSpecular) && (sampledType & kTransmission)) {
       // A refraction scales beta by 1 / eta^2 when the path goes in (wo on the side the normal
       // points to) and by eta^2 when it comes out (pbrt 3e §8.2.3); etaScale undoes that.
       Float eta2 = bsdf->eta * bsdf->eta;
@@ -149,14 +149,17 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     ray.hasDifferentials = false;
 
     // Russian roulette: continue with probability tied to the throughput (pbrt 2e §15.3 uses
-    // min(0.5, y); the throughput's largest channel wastes less on coloured paths). Not before
-    // the last segment, which only looks for emission: it would add variance to save one ray.
-    // pbrt-v3's rule (path.h) spares paths whose eta-scaled throughput reaches rrthreshold.
+    // min(0.5, y); the throughput's largest channel wastes less on coloured paths), taken
+    // without the radiance scaling of refractions under both rules: inside glass beta is 1/eta^2
+    // of the light the path carries out again, and pbrt-v2's rule, which does not undo that,
+    // kills paths there with probability 0.56 and weighs the survivors 2.3x (with pbrt-v2's
+    // rule the Cornell box with a glass sphere had twice pbrt-v3's error per sample). Not
+    // before the last segment, which only looks for emission: it would add variance to save one
+    // ray. pbrt-v3's rule (path.h) spares paths whose eta-scaled throughput reaches rrthreshold.
     if (bounces >= rrStartDepth_ && bounces + 1 < maxDepth_) {
-      Float survival = beta.maxComponent();
+      Float survival = beta.maxComponent() * etaScale;
       bool faces = true;
       if (settings_.pbrtV3Roulette) {
-        survival *= etaScale;
         faces = survival < settings_.rrThreshold;
       }
       if (faces) {

@@ -6,10 +6,11 @@
 //
 // Russian roulette starts at rrStartDepth. By default (pbrt-v2's scenes) every path faces it there,
 // continuing with the throughput's largest channel. With pbrt-v3's rule (its "rrthreshold", on
-// for pbrt-v3 scenes) only a path whose throughput, times the radiance scaling of the refractions
-// it passed (eta^2 for each entry, pbrt 3e §16.1), is below rrthreshold faces it, continuing with
-// that scaled throughput. The light a vertex samples is chosen by lightsamplestrategy
-// (light_sampler.h); uniform by default, pbrt-v3's "spatial" for pbrt-v3 scenes.
+// for pbrt-v3 scenes) only a path whose throughput is below rrthreshold faces it. Both take the
+// throughput times the radiance scaling of the refractions it passed (eta^2 for each entry, pbrt
+// 3e §16.1), which pbrt-v2 itself does not undo: only the noise differs from pbrt-v2's. The light a
+// vertex samples is chosen by lightsamplestrategy (light_sampler.h); uniform by default, pbrt-v3's
+// "spatial" for pbrt-v3 scenes.
 #pragma once
 
 #include <memory>

@@ -59,6 +59,7 @@ struct PathState {
   RNG& rng;
   RayStats& stats;
   const LightSampler* lightSampler;  // null: uniform
+  bool hittableLights;               // some light is not a delta: scattering samples can meet it
 };
 
 // Transmittance from `from` to `to` in `medium` (the one the segment starts in), through pure
@@ -80,11 +81,25 @@ Spectrum shadowTransmittance(const Interaction& from, const Interaction& to, con
   return Spectrum(0);
 }
 
-// The radiance `light` sends to `from` along the ray leaving it in direction w (unit), with the
-// transmittance on the way: through pure interfaces (emission of `light` is collected on each,
-// as light sampling sees through them), stopping at the first surface with a material.
-Spectrum lightAlong(const Interaction& from, const Vector3f& w, const Medium* medium,
-                    const Light& light, PathState& s) {
+// The probability with which sampleOneLight chooses light at p.
+Float choiceProbability(const PathState& s, const Point3f& p, const Light& light) {
+  return s.lightSampler ? s.lightSampler->pmf(p, light) : 1 / Float(s.scene.lights().size());
+}
+
+// The BSDF or phase strategy's share of the direct light: the emission that the ray leaving
+// `from` in direction w (unit) meets first, with the transmittance on the way, through pure
+// interfaces (whose emission is collected as it is crossed, as light sampling sees through them),
+// stopping at the first surface with a material. Each light's emission is weighted by the power
+// heuristic of scatteringPdf against the light strategy's density of w for it: its choice
+// probability times its own density (pbrt 4e §13.4). Emission of any light counts, not only of
+// the one the light strategy chose: a light made of many triangles is many lights, and counting
+// only the chosen one's would throw most hits away.
+Spectrum emissionAlong(const Interaction& from, const Vector3f& w, const Medium* medium,
+                       Float scatteringPdf, PathState& s) {
+  auto weighted = [&](const Light& light, const Spectrum& le) {
+    Float lightPdf = choiceProbability(s, from.p, light) * light.pdfLi(from, w);
+    return le * powerHeuristic(1, scatteringPdf, 1, lightPdf);
+  };
   Spectrum tr(1), le(0);
   Ray ray = from.spawnRay(w);
   for (int crossing = 0; crossing < kMaxInterfaceCrossings; ++crossing) {
@@ -92,9 +107,18 @@ Spectrum lightAlong(const Interaction& from, const Vector3f& w, const Medium* me
     bool hit = s.scene.intersect(ray, &isect, s.stats);
     if (medium) tr *= trackedTransmittance(*medium, ray, s.rng);
     if (tr.isBlack()) return le;
-    if (!hit) return le + tr * light.Le(RayDifferential(ray));
+    if (!hit) {
+      for (const Light* light : s.scene.lights()) {
+        Spectrum e = light->Le(RayDifferential(ray));
+        if (!e.isBlack()) le += tr * weighted(*light, e);
+      }
+      return le;
+    }
     const Primitive& prim = *isect.primitive;
-    if (prim.areaLight == &light) le += tr * prim.areaLight->L(isect, -w);
+    if (prim.areaLight) {
+      Spectrum e = prim.areaLight->L(isect, -w);
+      if (!e.isBlack()) le += tr * weighted(*prim.areaLight, e);
+    }
     if (prim.material) return le;
     medium = s.media.after(isect, ray.d, medium);
     ray = isect.spawnRay(ray.d);
@@ -102,10 +126,11 @@ Spectrum lightAlong(const Interaction& from, const Vector3f& w, const Medium* me
   return le;
 }
 
-// One light chosen (uniformly, or by the light sampler): a light sample and a BSDF/phase sample,
-// divided by the choice's probability, combined by the power
-// heuristic (pbrt 3e §14.3.1, §15.3.1), each with its transmittance. shadowMedium(w) is the
-// medium a ray leaving it in direction w starts in.
+// Direct light at `it` (pbrt 3e §14.3.1, §15.3.1): a sample of one light, chosen uniformly or by
+// the light sampler, and a BSDF or phase sample, combined by the power heuristic with the light
+// strategy's density taken as the choice's probability times the light's density (so that the
+// scattering sample may count whichever light it meets), each with its transmittance.
+// shadowMedium(w) is the medium a ray leaving it in direction w starts in.
 template <typename ShadowMedium>
 Spectrum sampleOneLight(const Interaction& it, const Scatterer& scatterer,
                         const ShadowMedium& shadowMedium, PathState& s, Sampler& sampler) {
@@ -119,36 +144,34 @@ Spectrum sampleOneLight(const Interaction& it, const Scatterer& scatterer,
   const Light* chosen = s.lightSampler
                             ? s.lightSampler->sample(it.p, uChoice, &choicePdf)
                             : s.scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
-  if (!(choicePdf > 0)) return Spectrum(0);
-  const Light& light = *chosen;
   Spectrum ld(0);
   Vector3f wi;
-  Float lightPdf = 0, scatteringPdf = 0;
-  VisibilityTester vis;
-  Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
-  if (lightPdf > 0 && !li.isBlack()) {
-    Spectrum f = scatterer.f(it.wo, wi);
-    if (!f.isBlack()) {
-      Spectrum tr = shadowTransmittance(vis.p0, vis.p1, shadowMedium(wi), s);
-      if (!tr.isBlack()) {
-        Float weight =
-            light.isDelta() ? 1 : powerHeuristic(1, lightPdf, 1, scatterer.pdf(it.wo, wi));
-        ld += f * li * tr * (weight / lightPdf);
+  if (chosen && choicePdf > 0) {
+    const Light& light = *chosen;
+    Float lightPdf = 0;
+    VisibilityTester vis;
+    Spectrum li = light.sampleLi(it, uLight, &wi, &lightPdf, &vis);
+    if (lightPdf > 0 && !li.isBlack()) {
+      Spectrum f = scatterer.f(it.wo, wi);
+      if (!f.isBlack()) {
+        Spectrum tr = shadowTransmittance(vis.p0, vis.p1, shadowMedium(wi), s);
+        if (!tr.isBlack()) {
+          Float pdf = choicePdf * lightPdf;
+          Float weight = light.isDelta() ? 1 : powerHeuristic(1, pdf, 1, scatterer.pdf(it.wo, wi));
+          ld += f * li * tr * (weight / pdf);
+        }
       }
     }
   }
-  if (!light.isDelta()) {
+  if (s.hittableLights) {
+    Float scatteringPdf = 0;
     Spectrum f = scatterer.sample(it.wo, uComponent, uScattering, &wi, &scatteringPdf);
     if (!f.isBlack() && scatteringPdf > 0) {
-      lightPdf = light.pdfLi(it, wi);
-      if (lightPdf > 0) {
-        Spectrum le = lightAlong(it, wi, shadowMedium(wi), light, s);
-        if (!le.isBlack())
-          ld += f * le * (powerHeuristic(1, scatteringPdf, 1, lightPdf) / scatteringPdf);
-      }
+      Spectrum le = emissionAlong(it, wi, shadowMedium(wi), scatteringPdf, s);
+      if (!le.isBlack()) ld += f * le / scatteringPdf;
     }
   }
-  return s.lightSampler ? ld / choicePdf : ld * Float(nLights);
+  return ld;
 }
 
 // A per-path generator for the tracking decisions, seeded from two sampler dimensions (so a
@@ -162,6 +185,8 @@ RNG pathRng(Sampler& sampler) {
 }  // namespace
 
 void VolPathIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
+  hittableLights_ = false;
+  for (const Light* light : scene.lights()) hittableLights_ = hittableLights_ || !light->isDelta();
   lightSampler_.reset();
   if (lightStrategy_ != LightSampleStrategy::Uniform)
     lightSampler_ = createLightSampler(lightStrategy_, scene);
@@ -170,11 +195,13 @@ void VolPathIntegrator::preprocess(const Scene& scene, const PreprocessOptions&)
 Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene,
                                IntegratorContext& ctx, Float* alpha) const {
   RNG rng = pathRng(ctx.sampler);
-  PathState s{scene, MediaRules{scene.volume()}, rng, ctx.stats, lightSampler_.get()};
+  PathState s{scene,     MediaRules{scene.volume()}, rng,
+              ctx.stats, lightSampler_.get(),        hittableLights_};
   const Medium* medium = scene.volume() ? scene.volume() : scene.media().camera;
   Spectrum l(0), beta(1);
   RayDifferential ray(cameraRay);
   bool specularBounce = false;
+  Float etaScale = 1;  // the radiance scaling of the refractions passed, for the roulette
   bool firstSegment = true;
   *alpha = 0;
   int bounces = 0;
@@ -250,15 +277,23 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
       if (f.isBlack() || pdf == 0) break;
       beta *= f * (absDot(wi, bsdf->shadingNormal()) / pdf);
       specularBounce = (sampledType & kSpecular) != 0;
+      if ((sampledType & kSpecular) && (sampledType & kTransmission)) {
+        // A refraction scales beta by 1 / eta^2 going in and eta^2 coming out (pbrt 3e §8.2.3);
+        // the roulette below looks at beta without that scaling, as pbrt-v3's volpath does.
+        Float eta2 = bsdf->eta * bsdf->eta;
+        etaScale *= dot(isect.wo, isect.n) > 0 ? eta2 : 1 / eta2;
+      }
       medium = s.media.after(isect, wi, medium);
       ray = RayDifferential(isect.spawnRay(wi));
       ++bounces;
       crossings = 0;
     }
 
-    // Russian roulette once the throughput is small (pbrt 3e §14.5.1, volpath's rule).
-    if (bounces > 3 && beta.maxComponent() < rrThreshold_) {
-      Float q = std::max(Float(0.05), 1 - beta.maxComponent());
+    // Russian roulette once the throughput is small (pbrt 3e §14.5.1, volpath's rule), the
+    // throughput taken without the radiance scaling of the refractions the path passed.
+    Float survival = beta.maxComponent() * etaScale;
+    if (bounces > 3 && survival < rrThreshold_) {
+      Float q = std::max(Float(0.05), 1 - survival);
       if (ctx.sampler.get1D() < q) break;
       beta /= 1 - q;
     }

@@ -2,8 +2,10 @@
 // Free flights by delta tracking against the medium's majorant (closed form in homogeneous
 // media), transmittance of shadow rays by ratio tracking across any number of pure interfaces
 // (shapes without a material), next-event estimation at surfaces and in media with multiple
-// importance sampling of the light and the BSDF or phase function (power heuristic), and
-// pbrt-v3's Russian roulette on the throughput below rrthreshold after three bounces.
+// importance sampling of the light and the BSDF or phase function (power heuristic; the
+// scattering sample counts whichever light it meets, pbrt 4e §13.4, where pbrt-v3 counts only
+// the light chosen for the light sample), and pbrt-v3's Russian roulette on the throughput,
+// without the radiance scaling of refractions, below rrthreshold after three bounces.
 //
 // The current medium is tracked per path: it starts as the camera's (SceneMedia::camera) and
 // changes where a path crosses a surface whose Primitive has a MediumInterface. When the scene
@@ -38,6 +40,7 @@ class VolPathIntegrator : public SurfaceIntegrator {
  private:
   int maxDepth_;
   Float rrThreshold_;
+  bool hittableLights_ = true;  // some light a scattering sample can meet (set by preprocess)
   LightSampleStrategy lightStrategy_;
   std::unique_ptr<LightSampler> lightSampler_;  // null: uniform
 };

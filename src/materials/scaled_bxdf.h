@@ -2,6 +2,8 @@
 // never the pdf, so sampling stays that of the wrapped BxDF.
 #pragma once
 
+#include <algorithm>
+
 #include "reflection/bxdf.h"
 
 namespace candela {
@@ -18,6 +20,16 @@ class ScaledBxDF : public BxDF {
     return scale_ * bxdf_->sampleF(wo, wi, u, pdf, sampledType);
   }
   Float pdf(const Vector3f& wo, const Vector3f& wi) const override { return bxdf_->pdf(wo, wi); }
+  std::optional<Float> selectionWeight(const Vector3f& wo) const override {
+    std::optional<Float> w = bxdf_->selectionWeight(wo);
+    if (w) *w *= std::max(Float(0), scale_.average());
+    return w;
+  }
+  bool choosesLobe() const override { return bxdf_->choosesLobe(); }
+  Spectrum sampleChoosing(const Vector3f& wo, Vector3f* wi, Float uChoice, const Point2f& u,
+                          Float* pdf, BxDFType* sampledType = nullptr) const override {
+    return scale_ * bxdf_->sampleChoosing(wo, wi, uChoice, u, pdf, sampledType);
+  }
   Spectrum rho(const Vector3f& wo, std::span<const Point2f> u) const override {
     return scale_ * bxdf_->rho(wo, u);
   }

@@ -43,6 +43,11 @@ class BSDF {
     add(static_cast<const BxDF*>(b));
     if (count_ == 1) lambertian_ = b;
   }
+  // Whether sampleF reads its u1: to pick among components, or for a lone component that
+  // chooses lobes of its own. Integrators may skip computing the value otherwise.
+  bool readsComponentValue() const {
+    return count_ > 1 || (count_ == 1 && bxdfs_[0]->choosesLobe());
+  }
   int numComponents(int flags = kAllBxDF) const {
     if (lambertian_) return lambertian_->matches(flags) ? 1 : 0;
     return countMatching(flags);
@@ -61,18 +66,21 @@ class BSDF {
     return lambertian_ ? lambertianF(woW, wiW, flags) : mixtureF(woW, wiW, flags);
   }
   // Picks a matching component with u1, samples it with u2, and (for non-specular picks) returns
-  // the full mixture's value and pdf.
+  // the full mixture's value and pdf. The pick is uniform, or by the components' selection
+  // weights when every matching one has one (a smooth dielectric's reflection and refraction:
+  // by Fresnel); a component that chooses lobes of its own gets what is left of u1.
   Spectrum sampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point2f& u2, Float* pdf,
                    int flags = kAllBxDF, BxDFType* sampledType = nullptr) const {
     if (lambertian_) return lambertianSampleF(woW, wiW, u2, pdf, flags, sampledType);
     return mixtureSampleF(woW, wiW, u1, u2, pdf, flags, sampledType);
   }
-  // Mixture pdf over the matching components (the draft averages over all; the matching count is
-  // what sampleF uses, so that is the consistent choice).
+  // Mixture pdf over the matching components, each by the probability sampleF picks it with
+  // (the draft averages over all; the matching components are what sampleF picks from).
   Float pdf(const Vector3f& woW, const Vector3f& wiW, int flags = kAllBxDF) const {
     return lambertian_ ? lambertianPdf(woW, wiW, flags) : mixturePdf(woW, wiW, flags);
   }
-  // Sums of the matching components' reflectances rho_hd(wo) and rho_hh (lrt draft §10.1).
+  // Sums of the matching components' reflectances rho_hd(wo) and rho_hh (lrt draft §10.1); of a
+  // component that models both sides, the side flags ask for.
   Spectrum rho(const Vector3f& woW, std::span<const Point2f> u, int flags = kAllBxDF) const;
   Spectrum rho(std::span<const Point2f> u1, std::span<const Point2f> u2,
                int flags = kAllBxDF) const;
@@ -89,6 +97,14 @@ class BSDF {
     return dot(wiW, ng_) * dot(woW, ng_) > 0;
   }
   int countMatching(int flags) const;
+  // The matching components in order and, when weighted, the probability sampleF picks each with
+  // for wo (local); returns their count.
+  struct Selection {
+    const BxDF* bxdf[kMaxBxDFs];
+    Float probability[kMaxBxDFs];
+    bool weighted;
+  };
+  int selection(const Vector3f& wo, int flags, Selection* out) const;
   // Sums and averages over the matching components, each in the local frame.
   Spectrum mixtureF(const Vector3f& woW, const Vector3f& wiW, int flags) const;
   Spectrum mixtureSampleF(const Vector3f& woW, Vector3f* wiW, Float u1, const Point2f& u2,

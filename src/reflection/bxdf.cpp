@@ -28,30 +28,54 @@ struct SpectrumSum {
     return {Float(v[0] * scale), Float(v[1] * scale), Float(v[2] * scale)};
   }
 };
-}  // namespace
 
-Spectrum BxDF::rho(const Vector3f& wo, std::span<const Point2f> u) const {
+// rho_hd over sampleF's samples; side 0 counts every sample, +1 only reflected ones (wi on wo's
+// side), -1 only transmitted ones.
+Spectrum directionalAlbedo(const BxDF& b, const Vector3f& wo, std::span<const Point2f> u,
+                           int side) {
   SpectrumSum sum;
   for (const Point2f& s : u) {
     Vector3f wi;
     Float p = 0;
-    Spectrum f = sampleF(wo, &wi, s, &p);
-    if (p > 0) sum.add(f * (absCosTheta(wi) / p));
+    Spectrum f = b.sampleF(wo, &wi, s, &p);
+    if (p > 0 && (side == 0 || sameHemisphere(wo, wi) == (side > 0)))
+      sum.add(f * (absCosTheta(wi) / p));
   }
   return sum.mean(u.empty() ? 0 : 1.0 / double(u.size()));
 }
 
-Spectrum BxDF::rho(std::span<const Point2f> u1, std::span<const Point2f> u2) const {
+Spectrum hemisphericalAlbedo(const BxDF& b, std::span<const Point2f> u1,
+                             std::span<const Point2f> u2, int side) {
   // rho_hh = (1/pi) integral integral f |cos theta_o| |cos theta_i| dwo dwi.
   SpectrumSum sum;
   size_t n = std::min(u1.size(), u2.size());
   for (size_t i = 0; i < n; ++i) {
     Vector3f wo = sampleUniformHemisphere(u1[i]), wi;
     Float pdfO = uniformHemispherePdf(), pdfI = 0;
-    Spectrum f = sampleF(wo, &wi, u2[i], &pdfI);
-    if (pdfI > 0) sum.add(f * (absCosTheta(wi) * absCosTheta(wo) / (pdfO * pdfI)));
+    Spectrum f = b.sampleF(wo, &wi, u2[i], &pdfI);
+    if (pdfI > 0 && (side == 0 || sameHemisphere(wo, wi) == (side > 0)))
+      sum.add(f * (absCosTheta(wi) * absCosTheta(wo) / (pdfO * pdfI)));
   }
   return sum.mean(n == 0 ? 0 : 1.0 / (M_PI * double(n)));
+}
+
+}  // namespace
+
+Spectrum BxDF::rho(const Vector3f& wo, std::span<const Point2f> u) const {
+  return directionalAlbedo(*this, wo, u, 0);
+}
+
+Spectrum BxDF::rho(std::span<const Point2f> u1, std::span<const Point2f> u2) const {
+  return hemisphericalAlbedo(*this, u1, u2, 0);
+}
+
+Spectrum BxDF::rhoOneSide(const Vector3f& wo, std::span<const Point2f> u, bool reflection) const {
+  return directionalAlbedo(*this, wo, u, reflection ? 1 : -1);
+}
+
+Spectrum BxDF::rhoOneSide(std::span<const Point2f> u1, std::span<const Point2f> u2,
+                          bool reflection) const {
+  return hemisphericalAlbedo(*this, u1, u2, reflection ? 1 : -1);
 }
 
 std::vector<Point2f> stratifiedSamples2D(int n, RNG& rng) {

@@ -3,6 +3,7 @@
 // models; the BSDF decides between reflection and transmission with the geometric normal.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -12,7 +13,8 @@
 
 namespace candela {
 
-// Each BxDF is exactly one of reflection/transmission and one of diffuse/glossy/specular
+// Each BxDF is one of diffuse/glossy/specular and models reflection, transmission, or (a few
+// that choose between them themselves: a rough dielectric, hair, Fourier tables) both
 // (lrt draft §9.1).
 enum BxDFType : int {
   kReflection = 1 << 0,
@@ -61,6 +63,23 @@ class BxDF {
   // Density of sampleF's wi in solid angle; 0 for delta distributions.
   virtual Float pdf(const Vector3f& wo, const Vector3f& wi) const;
 
+  // The weight by which a BSDF picks this component to sample, when every component it could
+  // pick has one: proportional to the share of the light arriving along wo that the component
+  // scatters (a smooth dielectric's Fresnel reflectance for its reflection, the rest for its
+  // refraction), so that each pick's value over its probability stays near 1. nullopt: no such
+  // estimate, and the BSDF picks uniformly (lrt draft §15.5's choice).
+  virtual std::optional<Float> selectionWeight(const Vector3f&) const { return std::nullopt; }
+  // Whether sampleF chooses between lobes of its own after drawing a direction's parameters (a
+  // rough dielectric reflects or refracts at the microfacet it drew), and so needs a third
+  // uniform value; sampleChoosing then takes it. The BSDF passes what is left of the value that
+  // picked the component, which is uniform again and independent of u.
+  virtual bool choosesLobe() const { return false; }
+  virtual Spectrum sampleChoosing(const Vector3f& wo, Vector3f* wi, Float uChoice, const Point2f& u,
+                                  Float* pdf, BxDFType* sampledType = nullptr) const {
+    (void)uChoice;
+    return sampleF(wo, wi, u, pdf, sampledType);
+  }
+
   // Hemispherical-directional reflectance rho_hd(wo) = integral of f |cos theta_i| (lrt draft
   // §9.1), estimated by Monte Carlo over sampleF with the given canonical samples; BxDFs with a
   // closed form override it and ignore the samples.
@@ -68,6 +87,12 @@ class BxDF {
   // Hemispherical-hemispherical reflectance rho_hh: wo uniform over the hemisphere (u1), wi by
   // sampleF (u2). The draft printed the uniform pdf as 2 pi; it is 1 / (2 pi) (lrt draft §15.4).
   virtual Spectrum rho(std::span<const Point2f> u1, std::span<const Point2f> u2) const;
+  // The same for the part of a BxDF that models both sides which reflects (reflection true) or
+  // transmits: what a BSDF asked for one side sums. Monte Carlo over sampleF, counting only the
+  // samples on that side of the surface.
+  Spectrum rhoOneSide(const Vector3f& wo, std::span<const Point2f> u, bool reflection) const;
+  Spectrum rhoOneSide(std::span<const Point2f> u1, std::span<const Point2f> u2,
+                      bool reflection) const;
 
  private:
   BxDFType type_;

@@ -14,6 +14,10 @@ Spectrum SpecularReflection::sampleF(const Vector3f& wo, Vector3f* wi, const Poi
   return fresnel_->evaluate(cosTheta(wo)) * r_ / absCosTheta(*wi);
 }
 
+std::optional<Float> SpecularReflection::selectionWeight(const Vector3f& wo) const {
+  return rho(wo, {}).average();
+}
+
 Spectrum SpecularReflection::rho(const Vector3f& wo, std::span<const Point2f>) const {
   return wo.z == 0 ? Spectrum(0) : fresnel_->evaluate(cosTheta(wo)) * r_;
 }
@@ -44,6 +48,11 @@ Spectrum SpecularTransmission::sampleF(const Vector3f& wo, Vector3f* wi, const P
   *pdf = 1;
   Spectrum transmitted = Spectrum(1) - fresnel_.evaluate(cosTheta(wo));
   return t_ * transmitted * (eta * eta / absCosTheta(*wi));
+}
+
+std::optional<Float> SpecularTransmission::selectionWeight(const Vector3f& wo) const {
+  if (wo.z == 0) return Float(0);
+  return (t_ * (Spectrum(1) - fresnel_.evaluate(cosTheta(wo)))).average();
 }
 
 Spectrum SpecularTransmission::rho(const Vector3f& wo, std::span<const Point2f>) const {

@@ -16,6 +16,9 @@ class SpecularReflection : public BxDF {
   Spectrum sampleF(const Vector3f& wo, Vector3f* wi, const Point2f& u, Float* pdf,
                    BxDFType* sampledType = nullptr) const override;
   Float pdf(const Vector3f&, const Vector3f&) const override { return 0; }
+  // The mean over channels of rho_hd: beside SpecularTransmission's weight, a dielectric is
+  // sampled by its Fresnel reflectance, as pbrt-v3's FresnelSpecular and Cycles' glass do.
+  std::optional<Float> selectionWeight(const Vector3f& wo) const override;
   // rho_hd = r F(cos theta_o) exactly; rho_hh falls back to Monte Carlo.
   Spectrum rho(const Vector3f& wo, std::span<const Point2f>) const override;
   using BxDF::rho;
@@ -37,6 +40,9 @@ class SpecularTransmission : public BxDF {
   Spectrum sampleF(const Vector3f& wo, Vector3f* wi, const Point2f& u, Float* pdf,
                    BxDFType* sampledType = nullptr) const override;
   Float pdf(const Vector3f&, const Vector3f&) const override { return 0; }
+  // t (1 - F(cos theta_o)), the mean over channels; 0 under total internal reflection. Without
+  // the radiance scaling, which a path undoes where it leaves the dielectric again.
+  std::optional<Float> selectionWeight(const Vector3f& wo) const override;
   // rho_hd = t (1 - F) (eta_o / eta_i)^2: more than 1 from the denser side, by the radiance
   // scaling; times (eta_i / eta_o)^2 it is the transmitted fraction of power.
   Spectrum rho(const Vector3f& wo, std::span<const Point2f>) const override;

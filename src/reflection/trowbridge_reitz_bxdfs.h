@@ -54,6 +54,9 @@ class TrowbridgeReitzTransmission : public BxDF {
                    BxDFType* sampledType = nullptr) const override;
   // The visible-normal density times dwh / dwi = eta^2 |wi . wh| / (wo . wh + eta wi . wh)^2.
   Float pdf(const Vector3f& wo, const Vector3f& wi) const override;
+  // The half vector on wo's side for a refracted pair, or false if no microfacet facing wo
+  // refracts wo into wi.
+  bool halfVector(const Vector3f& wo, const Vector3f& wi, Vector3f* wh) const;
 
  private:
   // eta_i / eta_o for wo on its side of the surface.
@@ -61,9 +64,6 @@ class TrowbridgeReitzTransmission : public BxDF {
     return wo.z > 0 ? fresnel_.etaInside() / fresnel_.etaOutside()
                     : fresnel_.etaOutside() / fresnel_.etaInside();
   }
-  // The half vector on wo's side for a refracted pair, or false if no microfacet facing wo
-  // refracts wo into wi.
-  bool halfVector(const Vector3f& wo, const Vector3f& wi, Vector3f* wh) const;
 
   Spectrum t_;
   const TrowbridgeReitzDistribution* distribution_;

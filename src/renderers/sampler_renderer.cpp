@@ -59,8 +59,14 @@ RenderResult SamplerRenderer::render(const Scene& scene, Film& film,
   // crop window every pixel of the full image still takes its samples, as in the uncropped render
   // (the film keeps only what lands in the crop); a cropped image is then the same bits as that
   // region of the full one, at the cost of the full render's work.
+  // The splats' filter weights are normalised over the area camera samples cover, the image and
+  // the filter's reach past its edges (film.filterSupportArea): bdpt's light-tracing strategy
+  // then measures each pixel as its camera strategies do, whose samples reach past the edges too,
+  // and their MIS weights sum to one. Normalised over the image alone, an edge pixel's splats
+  // weighed more than its own samples (the top row of a caustic scene under a Gaussian filter was
+  // 3.3% brighter than path tracing's).
   const bool splatting = integrator_.splats();
-  SplatBuffer* splats = splatting ? &film.enableSplats() : nullptr;
+  SplatBuffer* splats = splatting ? &film.enableSplats(film.filterSupportArea()) : nullptr;
   const Bounds2i bounds =
       splatting ? Bounds2i(Point2i(0, 0), film.fullResolution()) : film.pixelBounds();
   const int threads = options.nThreads > 0 ? options.nThreads : tbb::info::default_concurrency();

@@ -237,17 +237,24 @@ std::vector<double> sppmCausticErrors(const std::vector<double>& ref, uint64_t s
   return e;
 }
 
-// Against 2048 spp of bdpt (whose region means differ by 4% between seeds 7 and 8): seeds 1, 2, 3
-// measured 0.17-0.40 at one iteration and 0.03-0.09 at 8 and 64, where the reference's noise
-// dominates; so this checks the fall from 1 to 16 iterations and 12% at 16 (the reference's 4%
-// and SPPM's own error).
+// Against 8192 spp of bdpt (whose ring differs by 2.6% between seeds 7 and 8). Photons and
+// camera paths that pick the sphere's reflection or refraction by Fresnel carry their weight
+// through it unchanged, so one iteration is already within 2-7% (seeds 1, 2, 3; it was 17-40%
+// when the picks were half and half, against 2048 spp of bdpt) and the fall is measured in the
+// mean over the three seeds, from one iteration (0.052) to 64 (0.013; each seed 0.009-0.017).
+// Held: the mean falls, and every seed's error at 64 iterations is below 5%.
 TEST(SppmGlassCaustic, RegionMeansApproachABidirectionalReference) {
   test::TestRenderOptions o;
   o.build.seed = 7;
-  std::vector<double> ref = regionMeans(test::renderSceneText(glassCaustic(kBdpt, 2048), o).film());
-  std::vector<double> e = sppmCausticErrors(ref, 1, {1, 16});
-  EXPECT_LT(e[1], e[0]);
-  EXPECT_LT(e[1], 0.12);
+  std::vector<double> ref = regionMeans(test::renderSceneText(glassCaustic(kBdpt, 8192), o).film());
+  double first = 0, last = 0;
+  for (uint64_t seed : {1, 2, 3}) {
+    std::vector<double> e = sppmCausticErrors(ref, seed, {1, 64});
+    first += e[0] / 3;
+    last += e[1] / 3;
+    EXPECT_LT(e[1], 0.05) << "seed " << seed;
+  }
+  EXPECT_LT(last, first);
 }
 
 // Against 32768 spp of bdpt (reference noise about 1%), four settings to 512 iterations.

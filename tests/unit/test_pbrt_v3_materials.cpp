@@ -191,12 +191,24 @@ TEST(PbrtV3Materials, ReversedCoatFresnelBrightensPlasticAtGrazingAngles) {
 }
 
 TEST(PbrtV3Materials, RoughGlassUberKtAndSubstrate) {
-  // Glass with roughness refracts diffusely: a glossy transmission component; without, specular.
+  // Glass with roughness refracts diffusely: one glossy component that reflects and refracts
+  // (by the Fresnel term of the microfacet it draws), half of the light or more refracted;
+  // without roughness, specular.
   OneMaterial rough("glass",
                     {test::floats("uroughness", {0.2f}), test::floats("vroughness", {0.2f})}, true);
   OneMaterial smooth("glass", {}, true);
-  EXPECT_EQ(rough.bsdf().numComponents(kTransmission | kGlossy), 1);
+  EXPECT_EQ(rough.bsdf().numComponents(kAllBxDF & ~kSpecular), 1);
+  EXPECT_EQ(rough.bsdf().numComponents(kReflection | kTransmission | kGlossy), 1);
   EXPECT_EQ(rough.bsdf().numComponents(kSpecular | kReflection | kTransmission), 0);
+  {
+    RNG rng(3);
+    std::vector<Point2f> u = stratifiedSamples2D(32, rng);
+    const BSDF& b = rough.bsdf();
+    Vector3f wo = dir(30, 0);
+    // Refracted radiance carries 1 / eta^2: the refracted share of power is its rho times eta^2.
+    EXPECT_GT(b.rho(wo, u, kAllTransmission)[1] * 1.5f * 1.5f, 0.5f);
+    EXPECT_LT(b.rho(wo, u, kAllReflection)[1], 0.2f);
+  }
   EXPECT_EQ(smooth.bsdf().numComponents(kTransmission | kSpecular), 1);
   EXPECT_FLOAT_EQ(rough.bsdf().eta, 1.5f);
   OneMaterial eta("glass", {test::floats("eta", {1.33f}), test::floats("index", {2})}, true);
