@@ -2,10 +2,12 @@
 """Two candela builds on the same scenes: render time (best of N runs, alternating builds so that
 load on the machine falls on both), rays traced, and whether the images are the same bits.
 
-    benchmarks/compare_builds.py OLD_CANDELA NEW_CANDELA [--scenes a,b] [--spp 16] [--runs 4]
+    benchmarks/compare_builds.py OLD_CANDELA NEW_CANDELA [--scenes a,b] [--scene-dir DIR]...
+        [--spp 16] [--runs 4]
 
-Scenes are names under scenes/ (scenes/NAME/NAME.pbrt), rendered with --spp and --seed 1 at full
-resolution. Used to show what a change costs scenes that do not use it (a scene without media
+Scenes are names under scenes/ (scenes/NAME/NAME.pbrt) or paths to .pbrt files, and with
+--scene-dir every .pbrt file in DIR (--scenes '' for those alone), rendered with --spp and
+--seed 1 at full resolution. Used to show what a change costs scenes that do not use it (a scene without media
 after media landed: README, "Participating media").
 """
 import argparse
@@ -37,14 +39,22 @@ def main():
     ap.add_argument("old")
     ap.add_argument("new")
     ap.add_argument("--scenes", default="cornell-box,spheres,indirect-room")
+    ap.add_argument("--scene-dir", action="append", default=[],
+                    help="also every .pbrt file in this folder (repeatable)")
     ap.add_argument("--spp", type=int, default=16)
     ap.add_argument("--runs", type=int, default=4)
     args = ap.parse_args()
     print("| scene | old best s | new best s | new/old | rays old | rays new | same bits |")
     print("|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
-        for name in args.scenes.split(","):
-            scene = os.path.join(ROOT, "scenes", name, name + ".pbrt")
+        scenes = []
+        for name in filter(None, args.scenes.split(",")):
+            scenes.append((name, name if name.endswith(".pbrt") else
+                           os.path.join(ROOT, "scenes", name, name + ".pbrt")))
+        for d in args.scene_dir:
+            scenes += [(f[:-5], os.path.join(d, f)) for f in sorted(os.listdir(d))
+                       if f.endswith(".pbrt")]
+        for name, scene in scenes:
             times = {"old": [], "new": []}
             rays = {}
             for _ in range(args.runs):

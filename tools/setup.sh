@@ -42,8 +42,8 @@ install_missing() {
     say "then run again with CANDELA_SKIP_INSTALL=1:"
     say "  $(echo $wanted)"
     say "(CMake >= 3.25, Ninja, a C++20 compiler, Embree 3.13, oneTBB 2021, OpenImageIO 2.4,"
-    say " OpenEXR 3.1, Imath 3.1, OpenColorIO 2.1, OpenSubdiv 3.5, CLI11, fmt, GoogleTest, Google"
-    say " Benchmark; Python 3 with matplotlib for the tools)"
+    say " OpenEXR 3.1, Imath 3.1, OpenColorIO 2.1, OpenSubdiv 3.5, CLI11, fmt, GoogleTest;"
+    say " Python 3 with matplotlib for the tools)"
     exit 1
   fi
   for p in $wanted; do

@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include "accel/embree/embree_device.h"
+#include "assembly/shape_factory.h"
 #include "core/rng.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
-#include "scene/shape_factory.h"
+#include "parser/parser.h"
+#include "parser/scene_builder.h"
 
 namespace candela::bench {
 

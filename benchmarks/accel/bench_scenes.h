@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "accel/scene_geometry.h"
+#include "assembly/render_job.h"
 #include "cameras/camera.h"
-#include "scene/render_job.h"
 #include "shapes/triangle_mesh.h"
 
 namespace candela {

@@ -4,8 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
+#include "parser/parser.h"
+#include "parser/scene_builder.h"
 
 namespace candela::bench {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/render_job.h"
+#include "assembly/render_job.h"
 
 namespace candela::bench {
 

@@ -16,15 +16,15 @@
 #include "app/render_piece.h"
 #include "app/sample_range.h"
 #include "app/scene_hash.h"
+#include "assembly/render_job.h"
 #include "core/interrupt.h"
 #include "film/error_metrics.h"
 #include "film/output/image_output.h"
 #include "film/output/texture_loader.h"
+#include "parser/parser.h"
+#include "parser/scene_builder.h"
 #include "renderers/progressive_render.h"
 #include "renderers/sampler_renderer.h"
-#include "scene/parser.h"
-#include "scene/render_job.h"
-#include "scene/scene_builder.h"
 
 using namespace candela;
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/render_piece.h"
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 
 namespace candela {
 

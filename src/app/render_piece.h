@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/bounds.h"
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 
 namespace candela {
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "app/render_piece.h"
-#include "scene/render_job.h"
+#include "assembly/render_job.h"
 
 namespace candela {
 

@@ -8,7 +8,7 @@
 #include "cameras/orthographic_camera.h"
 #include "cameras/perspective_camera.h"
 #include "cameras/realistic_camera.h"
-#include "scene/scene_path.h"
+#include "core/scene_path.h"
 
 namespace candela {
 

@@ -2,8 +2,8 @@
 // variance when there is no reference. Channels R, G, B over the film's pixel bounds.
 #pragma once
 
+#include "core/image_buffer.h"
 #include "film/film.h"
-#include "film/image_buffer.h"
 
 namespace candela {
 

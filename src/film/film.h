@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "core/bounds.h"
+#include "core/image_buffer.h"
 #include "core/spectrum.h"
 #include "film/aov.h"
-#include "film/image_buffer.h"
 #include "film/splat_buffer.h"
 #include "filters/filter.h"
 

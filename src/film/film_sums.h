@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/image_buffer.h"
 #include "film/film.h"
-#include "film/image_buffer.h"
 
 namespace candela {
 

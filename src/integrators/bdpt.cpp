@@ -85,7 +85,7 @@ std::vector<NamedImage> BdptIntegrator::extraImages(const Film& film) const {
 void BdptIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
   lights_ = scene.lights();
   scene.worldBound().boundingSphere(&sceneCenter_, &sceneRadius_);
-  lightSampler_ = createLightSampler(lightStrategy_, scene);
+  lightSampler_ = createLightSampler(lightStrategy_, scene.lights(), scene.worldBound());
 }
 
 Float BdptIntegrator::lightPdf(const Light* light) const {

@@ -7,7 +7,7 @@
 // the irradiance before the boundary; 1 - Fdr is the diffuse transmittance that lets it in, as in
 // pbrt-v2. E_i is direct light only (no indirect bounce into the samples).
 // Parameters (pbrt-v2's): maxdepth 5, maxerror .05, minsampledistance .25, and pointsfile: sample
-// points given instead of placed (pbrt-v2's format, see scene/integrator_factory.cpp).
+// points given instead of placed (pbrt-v2's format, see assembly/integrator_factory.cpp).
 #pragma once
 
 #include <memory>

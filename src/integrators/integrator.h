@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/image_buffer.h"
 #include "core/memory.h"
-#include "film/image_buffer.h"
 #include "samplers/halton_sampler.h"
 #include "samplers/sampler.h"
 #include "scene/scene.h"

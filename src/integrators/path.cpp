@@ -12,7 +12,7 @@ namespace candela {
 void PathIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
   lightSampler_.reset();
   if (settings_.lightStrategy != LightSampleStrategy::Uniform)
-    lightSampler_ = createLightSampler(settings_.lightStrategy, scene);
+    lightSampler_ = createLightSampler(settings_.lightStrategy, scene.lights(), scene.worldBound());
 }
 
 Spectrum PathIntegrator::Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,

@@ -189,7 +189,7 @@ void VolPathIntegrator::preprocess(const Scene& scene, const PreprocessOptions&)
   for (const Light* light : scene.lights()) hittableLights_ = hittableLights_ || !light->isDelta();
   lightSampler_.reset();
   if (lightStrategy_ != LightSampleStrategy::Uniform)
-    lightSampler_ = createLightSampler(lightStrategy_, scene);
+    lightSampler_ = createLightSampler(lightStrategy_, scene.lights(), scene.worldBound());
 }
 
 Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& scene,

@@ -4,7 +4,6 @@
 
 #include "core/sampling.h"
 #include "lights/spatial_light_sampler.h"
-#include "scene/scene.h"
 
 namespace candela {
 
@@ -83,14 +82,16 @@ class PowerLightSampler final : public LightSampler {
 
 }  // namespace
 
-std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy, const Scene& scene) {
+std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy,
+                                                 const std::vector<const Light*>& lights,
+                                                 const Bounds3f& sceneBounds) {
   switch (strategy) {
     case LightSampleStrategy::Uniform:
-      return std::make_unique<UniformLightSampler>(scene.lights());
+      return std::make_unique<UniformLightSampler>(lights);
     case LightSampleStrategy::Power:
-      return std::make_unique<PowerLightSampler>(scene.lights());
+      return std::make_unique<PowerLightSampler>(lights);
     case LightSampleStrategy::Spatial:
-      return std::make_unique<SpatialLightSampler>(scene.lights(), scene.worldBound());
+      return std::make_unique<SpatialLightSampler>(lights, sceneBounds);
   }
   return nullptr;
 }

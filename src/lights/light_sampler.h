@@ -18,8 +18,6 @@
 
 namespace candela {
 
-class Scene;
-
 enum class LightSampleStrategy { Uniform, Power, Spatial };
 
 // "uniform", "power" or "spatial"; nullopt for anything else.
@@ -49,8 +47,11 @@ class LightIndex {
 // a finite positive number. (Also the light choice of photon shooting and light paths.)
 std::vector<Float> lightPowerWeights(std::span<const Light* const> lights);
 
-// The sampler of a strategy over the scene's lights (after the lights' preprocess: the power
-// of distant and infinite lights depends on the scene's bounds).
-std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy, const Scene& scene);
+// The sampler of a strategy over a scene's lights (after the lights' preprocess: the power of
+// distant and infinite lights depends on the scene's bounds) within the scene's bounds (what the
+// spatial strategy's voxels divide).
+std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy,
+                                                 const std::vector<const Light*>& lights,
+                                                 const Bounds3f& sceneBounds);
 
 }  // namespace candela

@@ -60,7 +60,7 @@ class IrregularBrdfTable {
 };
 
 // Turns spectral samples (wavelengths in nm, values) into RGB. The scene reader's reflectance
-// conversion (scene/spectrum_input.h, SpectrumUse::Reflectance) is the one to pass; reflection
+// conversion (parser/spectrum_input.h, SpectrumUse::Reflectance) is the one to pass; reflection
 // sits below the scene module and does not call it itself.
 using SpectrumToRGB =
     std::function<Spectrum(std::span<const Float> lambdaNm, std::span<const Float> values)>;

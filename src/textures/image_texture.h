@@ -6,7 +6,7 @@
 
 #include <memory>
 
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 #include "textures/mapping.h"
 #include "textures/mipmap.h"
 #include "textures/texture.h"

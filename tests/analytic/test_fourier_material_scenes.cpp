@@ -15,8 +15,8 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
+#include "parser/parser.h"
+#include "parser/scene_builder.h"
 #include "support/fourier_bsdf_writer.h"
 #include "support/render_scene.h"
 #include "support/test_device.h"

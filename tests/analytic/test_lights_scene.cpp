@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/spectrum_input.h"
+#include "parser/spectrum_input.h"
 #include "support/render_scene.h"
 
 namespace candela {

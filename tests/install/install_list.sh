@@ -41,7 +41,7 @@ expect_missing() {
 }
 expect_missing openimageio-tools '/usr/bin/iconvert' "$required"
 expect_missing libosd-dev '/usr/\S*libosdCPU' "$required"
-expect_missing libbenchmark-dev '/usr/\S*benchmark' "$required"
+expect_missing libgmock-dev '/usr/\S*gmock' "$required"
 expect_missing libcli11-dev '/usr/\S*CLI11' "$required"
 expect_missing python3-matplotlib '/usr/\S*matplotlib' "$extras"
 expect_missing slurmctld '/usr/sbin/slurmctld' "$extras"

@@ -12,11 +12,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "assembly/plugin_factories.h"
+#include "assembly/texture_factory.h"
 #include "core/error.h"
 #include "lights/goniometric_light.h"
 #include "lights/projection_light.h"
-#include "scene/plugin_factories.h"
-#include "scene/texture_factory.h"
 #include "support/param_items.h"
 #include "support/temp_dir.h"
 

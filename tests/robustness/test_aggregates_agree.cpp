@@ -32,10 +32,10 @@
 
 #include "accel/aggregate_factory.h"
 #include "accel/embree/embree_device.h"
+#include "assembly/shape_factory.h"
 #include "core/parallel_for.h"
 #include "core/rng.h"
 #include "core/sampling.h"
-#include "scene/shape_factory.h"
 #include "shapes/triangle_mesh.h"
 #include "support/param_items.h"
 #include "support/random_geometry.h"

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstring>
 
+#include "assembly/material_factory.h"
 #include "core/error.h"
 #include "materials/hair.h"
 #include "reflection/hair_absorption.h"
 #include "reflection/hair_bxdf.h"
-#include "scene/material_factory.h"
 #include "support/render_scene.h"
 
 namespace candela {

@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 
 namespace candela::test {
 

@@ -23,7 +23,7 @@
 #include <utility>
 #include <vector>
 
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 
 namespace candela::test {
 

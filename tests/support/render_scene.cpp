@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "accel/embree/embree_device.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
+#include "parser/parser.h"
+#include "parser/scene_builder.h"
 #include "support/test_device.h"
 
 namespace candela::test {

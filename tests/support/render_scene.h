@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "assembly/render_job.h"
 #include "renderers/sampler_renderer.h"
-#include "scene/render_job.h"
 
 namespace candela::test {
 

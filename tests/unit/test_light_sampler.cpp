@@ -53,8 +53,9 @@ TEST(LightSampler, UniformAndPowerProbabilities) {
   auto built = test::buildSceneText(pointLightsScene({{-5, 1}, {0, 3}, {5, 12}}));
   const Scene& scene = *built.job().scene;
   Point3f p(1, 0, 2);
-  auto uniform = createLightSampler(LightSampleStrategy::Uniform, scene);
-  auto power = createLightSampler(LightSampleStrategy::Power, scene);
+  auto uniform =
+      createLightSampler(LightSampleStrategy::Uniform, scene.lights(), scene.worldBound());
+  auto power = createLightSampler(LightSampleStrategy::Power, scene.lights(), scene.worldBound());
   for (const Light* l : scene.lights()) EXPECT_FLOAT_EQ(uniform->pmf(p, *l), 1.0f / 3);
   // Power 4 pi I: in proportion 1 : 3 : 12.
   EXPECT_NEAR(power->pmf(p, *scene.lights()[0]), 1.0 / 16, 1e-6);
@@ -67,7 +68,7 @@ TEST(LightSampler, UniformAndPowerProbabilities) {
 TEST(LightSampler, PowerOfLightsWithoutPowerIsUniform) {
   auto built = test::buildSceneText(pointLightsScene({{-5, 0}, {5, 0}}));
   const Scene& scene = *built.job().scene;
-  auto power = createLightSampler(LightSampleStrategy::Power, scene);
+  auto power = createLightSampler(LightSampleStrategy::Power, scene.lights(), scene.worldBound());
   for (const Light* l : scene.lights()) EXPECT_FLOAT_EQ(power->pmf(Point3f(), *l), 0.5f);
 }
 

@@ -1,7 +1,7 @@
 // The "loopsubdiv" shape: a TriangleMesh on the limit surface, from either producer.
 #include <gtest/gtest.h>
 
-#include "scene/shape_factory.h"
+#include "assembly/shape_factory.h"
 #include "shapes/loop_subdiv_shape.h"
 #include "support/param_items.h"
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "assembly/material_factory.h"
 #include "materials/bump.h"
 #include "materials/glass.h"
 #include "materials/matte.h"
@@ -12,7 +13,6 @@
 #include "materials/plastic.h"
 #include "materials/substrate.h"
 #include "reflection/microfacet.h"
-#include "scene/material_factory.h"
 #include "support/param_items.h"
 
 namespace candela {

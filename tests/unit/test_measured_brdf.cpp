@@ -9,9 +9,9 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "parser/spectrum_input.h"
 #include "reflection/irregular_brdf.h"
 #include "reflection/merl_brdf.h"
-#include "scene/spectrum_input.h"
 
 namespace candela {
 namespace {

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <limits>
 
+#include "assembly/shape_factory.h"
 #include "core/rng.h"
-#include "scene/shape_factory.h"
 #include "shapes/bspline_basis.h"
 #include "shapes/nurbs.h"
 

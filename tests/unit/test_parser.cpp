@@ -5,7 +5,7 @@
 #include <map>
 #include <sstream>
 
-#include "scene/parser.h"
+#include "parser/parser.h"
 
 using namespace candela;
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "assembly/plugin_factories.h"
 #include "integrators/path.h"
-#include "scene/plugin_factories.h"
 #include "support/param_items.h"
 #include "support/render_scene.h"
 

@@ -1,4 +1,4 @@
-// Each scene dialect gets its own microfacet models (scene/scene_dialect.h): pbrt-v3 scenes
+// Each scene dialect gets its own microfacet models (parser/scene_dialect.h): pbrt-v3 scenes
 // pbrt-v3's Trowbridge-Reitz materials with uroughness/vroughness and remaproughness, pbrt-v2
 // scenes exactly pbrt-v2's; the detection rules, the --dialect override and plastic's coat
 // Fresnel option.
@@ -6,11 +6,11 @@
 
 #include <cmath>
 
+#include "assembly/material_factory.h"
 #include "materials/glass.h"
 #include "materials/metal.h"
 #include "materials/plastic.h"
 #include "reflection/trowbridge_reitz_bxdfs.h"
-#include "scene/material_factory.h"
 #include "support/param_items.h"
 #include "support/render_scene.h"
 

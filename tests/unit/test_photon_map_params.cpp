@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "scene/photon_map_params.h"
-#include "scene/plugin_factories.h"
+#include "assembly/photon_map_params.h"
+#include "assembly/plugin_factories.h"
 #include "support/param_items.h"
 
 namespace candela {

@@ -6,9 +6,9 @@
 #include <random>
 #include <string_view>
 
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
-#include "scene/tokenizer.h"
+#include "parser/parser.h"
+#include "parser/scene_builder.h"
+#include "parser/tokenizer.h"
 
 using namespace candela;
 

@@ -5,7 +5,7 @@
 
 #include "core/cie_data.h"
 #include "core/error.h"
-#include "scene/spectrum_input.h"
+#include "parser/spectrum_input.h"
 
 using namespace candela;
 

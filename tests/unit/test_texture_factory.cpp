@@ -2,7 +2,7 @@
 // image, and the errors a scene can provoke.
 #include <gtest/gtest.h>
 
-#include "scene/texture_factory.h"
+#include "assembly/texture_factory.h"
 #include "support/param_items.h"
 #include "support/render_scene.h"
 #include "textures/dots.h"

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "scene/tokenizer.h"
+#include "parser/tokenizer.h"
 
 using namespace candela;
 

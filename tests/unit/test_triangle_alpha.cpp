@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "accel/embree/embree_aggregate.h"
+#include "assembly/shape_factory.h"
+#include "assembly/texture_factory.h"
 #include "core/rng.h"
-#include "scene/shape_factory.h"
-#include "scene/texture_factory.h"
 #include "shapes/triangle_mesh.h"
 #include "support/param_items.h"
 #include "support/test_device.h"

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <string>
 
+#include "assembly/volume_factory.h"
 #include "core/error.h"
 #include "media/aggregate_volume.h"
 #include "media/exponential_volume.h"
 #include "media/homogeneous_volume.h"
 #include "media/tracking.h"
 #include "media/volume_grid.h"
-#include "scene/volume_factory.h"
 #include "support/render_scene.h"
 
 namespace candela {

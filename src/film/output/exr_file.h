@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 #include "film/output/image_codec.h"
 #include "film/output/image_output.h"
 

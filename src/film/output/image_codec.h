@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 
 namespace candela {
 

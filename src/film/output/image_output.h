@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 
 namespace candela {
 

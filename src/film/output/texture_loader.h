@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "film/image_buffer.h"
+#include "core/image_buffer.h"
 #include "film/output/image_output.h"
 
 namespace candela {

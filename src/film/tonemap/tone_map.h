@@ -5,8 +5,8 @@
 
 #include <string>
 
+#include "core/image_buffer.h"
 #include "core/paramset.h"
-#include "film/image_buffer.h"
 
 namespace candela {
 

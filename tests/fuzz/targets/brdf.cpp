@@ -3,8 +3,8 @@
 #include "core/error.h"
 #include "fuzz/targets/fuzz_targets.h"
 #include "fuzz/targets/lookup_directions.h"
+#include "parser/spectrum_input.h"
 #include "reflection/irregular_brdf.h"
-#include "scene/spectrum_input.h"
 
 namespace candela::fuzz {
 

@@ -3,8 +3,8 @@
 #include "core/error.h"
 #include "fuzz/targets/fuzz_targets.h"
 #include "fuzz/targets/split_files.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
+#include "parser/parser.h"
+#include "parser/scene_builder.h"
 
 namespace candela::fuzz {
 

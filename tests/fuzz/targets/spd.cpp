@@ -2,9 +2,9 @@
 
 #include "core/error.h"
 #include "fuzz/targets/fuzz_targets.h"
-#include "scene/parser.h"
-#include "scene/scene_builder.h"
-#include "scene/spectrum_input.h"
+#include "parser/parser.h"
+#include "parser/scene_builder.h"
+#include "parser/spectrum_input.h"
 
 namespace candela::fuzz {
 

@@ -2,7 +2,7 @@
 #include <string>
 
 #include "fuzz/targets/fuzz_targets.h"
-#include "scene/tokenizer.h"
+#include "parser/tokenizer.h"
 
 namespace candela::fuzz {
 

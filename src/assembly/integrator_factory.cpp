@@ -1,0 +1,306 @@
+// SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator.
+#include "assembly/photon_map_params.h"
+#include "assembly/plugin_factories.h"
+#include "core/scene_path.h"
+#include "integrators/ambient_occlusion.h"
+#include "integrators/bdpt.h"
+#include "integrators/dipole_subsurface.h"
+#include "integrators/direct_lighting.h"
+#include "integrators/instant_global_illumination.h"
+#include "integrators/irradiance/irradiance_cache_integrator.h"
+#include "integrators/path.h"
+#include "integrators/volpath.h"
+#include "integrators/whitted.h"
+#include "parser/number_file.h"
+
+namespace candela {
+
+namespace {
+
+// "maxdepth" is read only by the integrators that have it, so that anywhere else it is reported
+// as unused.
+// recursive: the integrator recurses once per level (whitted, directlighting), on a worker
+// thread's stack, which two facing mirrors overflow somewhere past 10,000 levels.
+int maxDepthParam(const PluginDesc& desc, bool recursive, const char* name = "maxdepth") {
+  const ParamSet& p = desc.params;
+  int maxDepth = p.getOneInt(name, 5);
+  if (maxDepth < 0)
+    throw SceneError(p.locationOf(name, desc.loc), std::string(name).append(" must be >= 0"));
+  constexpr int kMaxRecursion = 1000;
+  if (recursive && maxDepth > kMaxRecursion)
+    throw SceneError(p.locationOf(name, desc.loc),
+                     std::string(name)
+                         .append(" must be at most ")
+                         .append(std::to_string(kMaxRecursion))
+                         .append(" for '")
+                         .append(desc.name)
+                         .append("', which recurses once per level; got ")
+                         .append(std::to_string(maxDepth)));
+  return maxDepth;
+}
+
+// "irradiancecache" with both dialects' parameters (their mapping: irradiance_cache_settings.h).
+IrradianceCacheSettings irradianceCacheParams(const PluginDesc& desc) {
+  const ParamSet& p = desc.params;
+  IrradianceCacheSettings s;
+  auto fail = [&](const char* name, const std::string& what) {
+    throw SceneError(p.locationOf(name, desc.loc), what);
+  };
+  s.maxError = p.getOneFloat("maxerror", s.maxError);
+  if (!(s.maxError >= 0 && s.maxError < kInfinity))
+    fail("maxerror", "maxerror must be >= 0 and finite (0: cache nothing)");
+  s.minWeight = p.getOneFloat("minweight", s.minWeight);
+  if (!(s.minWeight >= 0 && s.minWeight < kInfinity))
+    fail("minweight", "minweight must be >= 0 and finite");
+  s.minPixelSpacing = p.getOneFloat("minpixelspacing", s.minPixelSpacing);
+  if (!(s.minPixelSpacing >= 0 && s.minPixelSpacing < kInfinity))
+    fail("minpixelspacing", "minpixelspacing must be >= 0 and finite");
+  s.maxPixelSpacing = p.getOneFloat("maxpixelspacing", s.maxPixelSpacing);
+  if (!(s.maxPixelSpacing > 0 && s.maxPixelSpacing < kInfinity))
+    fail("maxpixelspacing", "maxpixelspacing must be > 0 and finite");
+  if (s.minPixelSpacing > s.maxPixelSpacing)
+    fail(p.find("minpixelspacing") ? "minpixelspacing" : "maxpixelspacing",
+         "minpixelspacing (" + std::to_string(s.minPixelSpacing) +
+             ") must not exceed maxpixelspacing (" + std::to_string(s.maxPixelSpacing) + ")");
+  s.maxAngleDifference = p.getOneFloat("maxangledifference", s.maxAngleDifference);
+  if (!(s.maxAngleDifference > 0 && s.maxAngleDifference <= 90))
+    fail("maxangledifference", "maxangledifference must be in (0, 90] degrees");
+  s.nSamples = p.getOneInt("nsamples", s.nSamples);
+  if (s.nSamples < 1) fail("nsamples", "nsamples must be >= 1");
+  s.nFilter = p.getOneInt("nfilter", s.nFilter);
+  if (s.nFilter < 0) fail("nfilter", "nfilter must be >= 0");
+  s.nFilter = std::min(s.nFilter, s.nSamples - 1);  // the draft's clamp: keep one value
+  s.maxSpecularDepth = maxDepthParam(desc, true, "maxspeculardepth");
+  s.maxIndirectDepth = p.getOneInt("maxindirectdepth", s.maxIndirectDepth);
+  if (s.maxIndirectDepth < 0) fail("maxindirectdepth", "maxindirectdepth must be >= 0");
+  return s;
+}
+
+// pbrt-v2's "igi" parameters and defaults (pbrt 2e §15.4).
+std::unique_ptr<SurfaceIntegrator> createIgi(const PluginDesc& desc) {
+  const ParamSet& p = desc.params;
+  auto fail = [&](const char* name, const char* what) {
+    throw SceneError(p.locationOf(name, desc.loc), what);
+  };
+  IgiParameters igi;
+  igi.pathsPerSet = p.getOneInt("nlights", 64);
+  if (igi.pathsPerSet < 1) fail("nlights", "nlights must be >= 1");
+  igi.nSets = p.getOneInt("nsets", 4);
+  if (igi.nSets < 1) fail("nsets", "nsets must be >= 1");
+  // The VPL sets are numbered with 32-bit indices.
+  if (int64_t(igi.pathsPerSet) * igi.nSets > int64_t(1) << 30)
+    fail("nlights", "nlights * nsets must be at most 2^30");
+  igi.rrThreshold = p.getOneFloat("rrthreshold", 1e-4f);
+  if (!(igi.rrThreshold >= 0)) fail("rrthreshold", "rrthreshold must be >= 0");
+  igi.maxDepth = maxDepthParam(desc, true);
+  igi.gLimit = p.getOneFloat("glimit", 10);
+  if (!(igi.gLimit > 0)) fail("glimit", "glimit must be > 0");
+  igi.gatherSamples = p.getOneInt("gathersamples", 16);
+  if (igi.gatherSamples < 0) fail("gathersamples", "gathersamples must be >= 0");
+  return std::make_unique<InstantGlobalIlluminationIntegrator>(igi);
+}
+
+}  // namespace
+
+namespace {
+
+// A light sample strategy parameter (lightsamplestrategy: uniform, power or spatial), a located
+// SceneError for any other name.
+LightSampleStrategy lightStrategyParam(const PluginDesc& desc, const char* name,
+                                       const char* byDefault) {
+  const ParamSet& p = desc.params;
+  std::string strategy = p.getOneString(name, byDefault);
+  std::optional<LightSampleStrategy> named = lightSampleStrategyNamed(strategy);
+  if (!named)
+    throw SceneError(
+        p.locationOf(name, desc.loc),
+        "unknown " + std::string(name) + " '" + strategy + "' (known: uniform, power, spatial)");
+  return *named;
+}
+
+// pbrt-v3's "lightsamplestrategy" of path and volpath: "spatial" in pbrt-v3 scenes that name none,
+// else uniform (pbrt-v2's choice).
+LightSampleStrategy pathLightStrategy(const PluginDesc& desc, SceneDialect dialect) {
+  return lightStrategyParam(desc, "lightsamplestrategy",
+                            dialect == SceneDialect::PbrtV3 ? "spatial" : "uniform");
+}
+
+// pbrt-v3's "rrthreshold" of path and volpath (default 1).
+Float rrThresholdParam(const PluginDesc& desc) {
+  Float t = desc.params.getOneFloat("rrthreshold", 1);
+  if (!(t >= 0 && t < kInfinity))
+    throw SceneError(desc.params.locationOf("rrthreshold", desc.loc),
+                     "rrthreshold must be >= 0 and finite");
+  return t;
+}
+
+// pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and
+// pbrt-v3 "bdpt" (maxdepth, lightsamplestrategy, visualizestrategies, visualizeweights).
+std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Camera* camera,
+                                              const Bounds2i& pixelBounds) {
+  const ParamSet& p = desc.params;
+  int maxDepth = maxDepthParam(desc, false);
+  LightSampleStrategy strategy = LightSampleStrategy::Power;
+  BdptIntegrator::Visualize visualize = BdptIntegrator::Visualize::None;
+  if (desc.name == "bdpt") {
+    // pbrt-v3: the weighted images win when both are asked for.
+    if (p.getOneBool("visualizestrategies", false))
+      visualize = BdptIntegrator::Visualize::Strategies;
+    if (p.getOneBool("visualizeweights", false)) visualize = BdptIntegrator::Visualize::Weights;
+    // pbrt-v3's name, or "lightsampler", candela's before it.
+    const char* name = p.find("lightsamplestrategy") ? "lightsamplestrategy" : "lightsampler";
+    strategy = lightStrategyParam(desc, name, "power");
+  }
+  const CameraImportance* importance = camera ? camera->importance() : nullptr;
+  if (!importance)
+    throw SceneError(desc.loc, std::string("surface integrator '")
+                                   .append(desc.name)
+                                   .append("' connects light paths to the camera, which the '")
+                                   .append(camera ? camera->kind() : "(none)")
+                                   .append("' camera does not support (use 'perspective')"));
+  // The camera's position, where "spatial" looks up its distribution: the lens point of the ray
+  // through the film's centre.
+  CameraSample centre;
+  centre.pFilm = Point2f(Float(pixelBounds.pMin.x + pixelBounds.pMax.x) / 2,
+                         Float(pixelBounds.pMin.y + pixelBounds.pMax.y) / 2);
+  centre.pLens = Point2f(0.5f, 0.5f);
+  Ray ray;
+  Point3f position(0, 0, 0);
+  if (camera->generateRay(centre, &ray) > 0) position = importance->lensPoint(ray);
+  return std::make_unique<BdptIntegrator>(*importance, maxDepth, strategy, visualize, pixelBounds,
+                                          position);
+}
+
+// dipolesubsurface's pointsfile, in pbrt-v2's format: eight numbers per point — position (3),
+// normal (3), area, and a ray offset — in world space. Unlike pbrt-v2, which warns and drops
+// them, values left over past the last whole point, a zero normal, a negative area or offset, and
+// a file without points are errors.
+std::vector<SubsurfacePoint> readSubsurfacePointsFile(const std::string& path, const FileLoc& loc) {
+  std::vector<double> v;
+  try {
+    v = readNumberFile(path);
+  } catch (const FileError& e) {
+    throw SceneError(loc, std::string("dipolesubsurface: cannot read pointsfile: ") + e.what());
+  }
+  auto fail = [&](const std::string& what) {
+    throw SceneError(loc, "dipolesubsurface: pointsfile '" + path + "': " + what);
+  };
+  if (v.empty()) fail("no points");
+  if (v.size() % 8 != 0)
+    fail(std::to_string(v.size()) + " values, not a multiple of 8 (x y z nx ny nz area offset)");
+  std::vector<SubsurfacePoint> points;
+  points.reserve(v.size() / 8);
+  for (size_t i = 0; i < v.size(); i += 8) {
+    SubsurfacePoint sp;
+    sp.p = Point3f(Float(v[i]), Float(v[i + 1]), Float(v[i + 2]));
+    Normal3f n = Normal3f(Float(v[i + 3]), Float(v[i + 4]), Float(v[i + 5]));
+    Float area = Float(v[i + 6]), offset = Float(v[i + 7]);
+    std::string which = "point " + std::to_string(i / 8 + 1) + ": ";
+    if (!(n.lengthSquared() > 0)) fail(which + "zero normal");
+    if (!(area >= 0)) fail(which + "negative area");
+    if (!(offset >= 0)) fail(which + "negative ray offset");
+    sp.n = normalize(n);
+    sp.area = area;
+    sp.pError = Vector3f(offset, offset, offset);
+    points.push_back(sp);
+  }
+  return points;
+}
+
+// pbrt-v2's "dipolesubsurface" (pbrt 2e §16.5).
+std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc) {
+  const ParamSet& p = desc.params;
+  DipoleSubsurfaceSettings s;
+  s.maxDepth = maxDepthParam(desc, true);
+  s.maxError = p.getOneFloat("maxerror", s.maxError);
+  if (!(s.maxError >= 0 && s.maxError < kInfinity))
+    throw SceneError(p.locationOf("maxerror", desc.loc), "maxerror must be >= 0 and finite");
+  s.minSampleDistance = p.getOneFloat("minsampledistance", s.minSampleDistance);
+  if (!(s.minSampleDistance > 0 && s.minSampleDistance < kInfinity))
+    throw SceneError(p.locationOf("minsampledistance", desc.loc),
+                     "minsampledistance must be > 0 and finite");
+  std::string pointsFile = p.getOneString("pointsfile", "");
+  if (!pointsFile.empty()) {
+    FileLoc loc = p.locationOf("pointsfile", desc.loc);
+    s.pointsFile = resolveScenePath(pointsFile, loc.file);
+    s.givenPoints = readSubsurfacePointsFile(s.pointsFile, loc);
+  }
+  return std::make_unique<DipoleSubsurfaceIntegrator>(s);
+}
+
+// pbrt-v3's "rrthreshold" and "lightsamplestrategy" (default 1 and "spatial" in pbrt-v3 scenes;
+// pbrt-v2's path has neither: every path faces roulette, lights are chosen uniformly, unless the
+// scene gives the parameters).
+std::unique_ptr<SurfaceIntegrator> createPath(const PluginDesc& desc, SceneDialect dialect) {
+  const ParamSet& p = desc.params;
+  const bool v3 = dialect == SceneDialect::PbrtV3;
+  PathSettings s;
+  s.maxDepth = maxDepthParam(desc, false);
+  s.pbrtV3Roulette = v3 || p.find("rrthreshold") != nullptr;
+  s.rrThreshold = rrThresholdParam(desc);
+  s.lightStrategy = pathLightStrategy(desc, dialect);
+  return std::make_unique<PathIntegrator>(s);
+}
+
+}  // namespace
+
+std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
+                                                           const Camera* camera,
+                                                           const Bounds2i& pixelBounds,
+                                                           SceneDialect dialect) {
+  const ParamSet& p = desc.params;
+  if (desc.name == "bidirectional" || desc.name == "bdpt")
+    return createBdpt(desc, camera, pixelBounds);
+  if (desc.name == "directlighting") {
+    int maxDepth = maxDepthParam(desc, true);
+    std::string strategy = p.getOneString("strategy", "all");
+    DirectLightingIntegrator::Strategy s;
+    if (strategy == "all")
+      s = DirectLightingIntegrator::Strategy::All;
+    else if (strategy == "one")
+      s = DirectLightingIntegrator::Strategy::One;
+    else
+      throw SceneError(
+          p.locationOf("strategy", desc.loc),
+          std::string("unknown strategy '").append(strategy).append("' (known: all, one)"));
+    return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
+  }
+  if (desc.name == "path") return createPath(desc, dialect);
+  if (desc.name == "volpath") {
+    // pbrt-v3's VolPathIntegrator parameters and defaults.
+    return std::make_unique<VolPathIntegrator>(maxDepthParam(desc, false), rrThresholdParam(desc),
+                                               pathLightStrategy(desc, dialect));
+  }
+  if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
+  if (desc.name == "ambientocclusion") {
+    // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
+    int nSamples = p.getOneInt("nsamples", 2048);
+    if (nSamples < 1) throw SceneError(p.locationOf("nsamples", desc.loc), "nsamples must be >= 1");
+    Float maxDist = p.getOneFloat("maxdist", kInfinity);
+    if (!(maxDist > 0)) throw SceneError(p.locationOf("maxdist", desc.loc), "maxdist must be > 0");
+    // pbrt-v3's switch: cosine-weighted directions (default) or pbrt-v2's uniform ones.
+    bool cosSample = p.getOneBool("cossample", true);
+    return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist, cosSample);
+  }
+  if (desc.name == "ao") {
+    // pbrt-v3's AOIntegrator: 64 directions, unbounded probes, the unnormalised cosine integral.
+    int nSamples = p.getOneInt("nsamples", 64);
+    if (nSamples < 1) throw SceneError(p.locationOf("nsamples", desc.loc), "nsamples must be >= 1");
+    bool cosSample = p.getOneBool("cossample", true);
+    return std::make_unique<AmbientOcclusionIntegrator>(
+        nSamples, kInfinity, cosSample, AmbientOcclusionIntegrator::Estimate::UnoccludedCosine);
+  }
+  if (desc.name == "irradiancecache")
+    return std::make_unique<IrradianceCacheIntegrator>(irradianceCacheParams(desc));
+  if (desc.name == "igi") return createIgi(desc);
+  if (desc.name == "dipolesubsurface") return createDipoleSubsurface(desc);
+  // pbrt-v2 registers its photon mapper under both names; nothing differs.
+  if (desc.name == "photonmap" || desc.name == "exphotonmap")
+    return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
+  throwUnknownPlugin(
+      desc.loc, "surface integrator", desc.name,
+      {"ambientocclusion", "ao", "bdpt", "bidirectional", "dipolesubsurface", "directlighting",
+       "exphotonmap", "igi", "irradiancecache", "path", "photonmap", "volpath", "whitted"});
+}
+
+}  // namespace candela

@@ -1,0 +1,104 @@
+// Parameters of Integrator "mlt" (pbrt-v3) and Renderer "metropolis" (pbrt-v2), with their
+// defaults. Bad values are SceneErrors at the parameter.
+//
+// "mlt" (pbrt 3e §16.4, over bdpt's paths, one MIS-weighted strategy per path):
+//   maxdepth 5               most scattering events of a path
+//   bootstrapsamples 100000  independent paths (per depth) that estimate b and pick the starts
+//   chains 1000              Markov chains, run in parallel
+//   mutationsperpixel 100    proposals per pixel of the full image, over all chains (--spp
+//                            replaces it)
+//   largestepprobability 0.3 probability that a proposal is a fresh path
+//   sigma 0.01               standard deviation of a small step in primary sample space
+// "metropolis" (pbrt 2e §15.7, on the same chains, with pbrt-v2's exponentially distributed
+// small steps of 1/1024 to 1/64 (Kelemen et al.) in place of Gaussian ones):
+//   maxdepth 7, bootstrapsamples 100000, largestepprobability 0.25 as above
+//   samplesperpixel 100      proposals per pixel (--spp replaces it)
+//   bidirectional true       paths of bdpt's strategies; false: unidirectional paths (light
+//                            samples at every vertex, emitters hit after specular bounces)
+//   dodirectseparately true  direct lighting by the directlighting integrator, left out of the
+//                            chains
+//   directsamples 4          that integrator's samples per pixel
+//   maxconsecutiverejects 512  after so many rejections in a row a proposal is accepted
+//   chains 1000              (candela's, not pbrt-v2's) Markov chains; each starts from one
+//                            bootstrap path, so chains of few mutations (small images) keep some
+//                            start-up bias: fewer chains, longer each, for those
+// --quick divides the sample counts (mutations, bootstrap, direct samples) by 4 (pbrt-v2's rule).
+#include "assembly/metropolis_params.h"
+
+#include "renderers/metropolis/metropolis_renderer.h"
+
+namespace candela {
+
+namespace {
+
+int atLeast(const PluginDesc& desc, const char* name, int def, int minimum) {
+  int v = desc.params.getOneInt(name, def);
+  if (v < minimum)
+    throw SceneError(desc.params.locationOf(name, desc.loc),
+                     std::string(name) + " must be >= " + std::to_string(minimum));
+  return v;
+}
+
+Float probability(const PluginDesc& desc, const char* name, Float def) {
+  Float v = desc.params.getOneFloat(name, def);
+  if (!(v >= 0 && v <= 1))
+    throw SceneError(desc.params.locationOf(name, desc.loc),
+                     std::string(name) + " must be in [0, 1]");
+  return v;
+}
+
+const CameraImportance& importanceOf(const PluginDesc& desc, const ImageRendererContext& c) {
+  const CameraImportance* importance = c.camera ? c.camera->importance() : nullptr;
+  if (!importance)
+    throw SceneError(desc.loc, std::string("'")
+                                   .append(desc.name)
+                                   .append("' connects light paths to the camera, which the '")
+                                   .append(c.camera ? c.camera->kind() : "(none)")
+                                   .append("' camera does not support (use 'perspective')"));
+  return *importance;
+}
+
+int quarterIfQuick(int n, const ImageRendererContext& c) {
+  return c.quick ? std::max(1, n / 4) : n;
+}
+
+}  // namespace
+
+std::unique_ptr<ImageRenderer> createMltRenderer(const PluginDesc& desc,
+                                                 const ImageRendererContext& context) {
+  MetropolisSettings s;
+  s.maxDepth = atLeast(desc, "maxdepth", 5, 0);
+  s.bootstrapSamples = quarterIfQuick(atLeast(desc, "bootstrapsamples", 100000, 1), context);
+  s.chains = atLeast(desc, "chains", 1000, 1);
+  s.mutationsPerPixel = atLeast(desc, "mutationsperpixel", 100, 1);
+  if (context.sppOverride > 0) s.mutationsPerPixel = context.sppOverride;
+  s.mutationsPerPixel = quarterIfQuick(int(s.mutationsPerPixel), context);
+  s.largeStepProbability = probability(desc, "largestepprobability", 0.3f);
+  s.sigma = desc.params.getOneFloat("sigma", 0.01f);
+  if (!(s.sigma > 0) || !std::isfinite(s.sigma))
+    throw SceneError(desc.params.locationOf("sigma", desc.loc), "sigma must be > 0");
+  s.bidirectional = true;
+  return std::make_unique<MetropolisRenderer>(importanceOf(desc, context), s, context.seed);
+}
+
+std::unique_ptr<ImageRenderer> createMetropolisRenderer(const PluginDesc& desc,
+                                                        const ImageRendererContext& context) {
+  MetropolisSettings s;
+  s.maxDepth = atLeast(desc, "maxdepth", 7, 0);
+  s.bootstrapSamples = quarterIfQuick(atLeast(desc, "bootstrapsamples", 100000, 1), context);
+  s.mutationsPerPixel = atLeast(desc, "samplesperpixel", 100, 1);
+  if (context.sppOverride > 0) s.mutationsPerPixel = context.sppOverride;
+  s.mutationsPerPixel = quarterIfQuick(int(s.mutationsPerPixel), context);
+  s.largeStepProbability = probability(desc, "largestepprobability", 0.25f);
+  s.maxConsecutiveRejects = atLeast(desc, "maxconsecutiverejects", 512, 1);
+  s.chains = atLeast(desc, "chains", 1000, 1);
+  s.smallStep = PrimarySamples::SmallStep::Exponential;
+  s.bidirectional = desc.params.getOneBool("bidirectional", true);
+  bool direct = desc.params.getOneBool("dodirectseparately", true);
+  int directSamples = quarterIfQuick(atLeast(desc, "directsamples", 4, 1), context);
+  s.excludeDirect = direct;
+  return std::make_unique<MetropolisRenderer>(importanceOf(desc, context), s, context.seed,
+                                              direct ? directSamples : 0);
+}
+
+}  // namespace candela

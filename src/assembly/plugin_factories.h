@@ -1,0 +1,60 @@
+// Name -> object for materials, lights and integrators. Unknown names are errors that list the
+// names that exist.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assembly/texture_factory.h"
+#include "cameras/camera.h"
+#include "integrators/integrator.h"
+#include "lights/light.h"
+#include "materials/material.h"
+#include "parser/scene_description.h"
+#include "parser/scene_dialect.h"
+#include "renderers/image_renderer.h"
+#include "samplers/sampler.h"
+
+namespace candela {
+
+[[noreturn]] void throwUnknownPlugin(const FileLoc& loc, const std::string& kind,
+                                     const std::string& name,
+                                     const std::vector<std::string>& known);
+
+// The material of shapes that name none (pbrt: matte with Kd 0.5).
+std::unique_ptr<Material> createDefaultMaterial(TextureFactory& textures);
+
+// Light maps ("mapname") are read through loadImage; without one they are an error.
+std::unique_ptr<Light> createLight(const LightDesc& desc,
+                                   const TextureFactory::ImageLoader& loadImage = {});
+std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* shape);
+
+// camera: the scene's, for integrators that connect light paths to it ("bidirectional"/"bdpt");
+// such an integrator with a camera that has no importance is a SceneError naming the camera.
+// pixelBounds: the film's, for images an integrator makes besides it. dialect: the scene's, for
+// the defaults of parameters whose pbrt-v3 default differs from pbrt-v2's behaviour.
+std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(
+    const PluginDesc& desc, const Camera* camera = nullptr, const Bounds2i& pixelBounds = {},
+    SceneDialect dialect = SceneDialect::PbrtV2);
+
+// What a whole-image renderer may take from the build.
+struct ImageRendererContext {
+  const Camera* camera = nullptr;
+  const Sampler* sampler = nullptr;  // its samples per pixel (after --spp and --quick)
+  uint64_t seed = 0;
+  bool quick = false;
+  int sppOverride = 0;   // --spp (0: none), for renderers whose sample count is a parameter
+  Bounds2i pixelBounds;  // the film's (crop window applied)
+  std::function<void(const FileLoc&, const std::string&)> warn;  // may be empty
+};
+
+// The whole-image renderer that an Integrator statement (pbrt-v3: "sppm", "mlt") or a Renderer
+// statement (pbrt-v2: "metropolis") selects; null when the scene renders with the sampler
+// renderer and a surface integrator. renderer.name is empty when the scene has no Renderer
+// statement. Bad parameters are SceneErrors at their location.
+std::unique_ptr<ImageRenderer> createImageRenderer(const PluginDesc& integrator,
+                                                   const PluginDesc& renderer,
+                                                   const ImageRendererContext& context);
+
+}  // namespace candela

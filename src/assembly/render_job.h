@@ -1,0 +1,132 @@
+// Everything one WorldEnd renders, created from a SceneDescription by the factories: only what
+// the scene uses is built (DESIGN.md, data flow step 2). The job owns every object; the Scene,
+// renderer and integrator hold plain pointers into it.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "accel/aggregate.h"
+#include "accel/scene_geometry.h"
+#include "assembly/material_factory.h"
+#include "assembly/texture_factory.h"
+#include "cameras/camera.h"
+#include "film/film.h"
+#include "integrators/integrator.h"
+#include "integrators/volume_integrator.h"
+#include "lights/light.h"
+#include "materials/material.h"
+#include "parser/scene_description.h"
+#include "renderers/image_renderer.h"
+#include "samplers/sampler.h"
+#include "scene/scene.h"
+#include "shapes/hyperboloid_normal.h"
+#include "shapes/loop_producer.h"
+#include "shapes/shape.h"
+#include "textures/noise.h"
+
+namespace candela {
+
+class EmbreeDevice;
+class MaterialFactory;
+class NamedMedia;
+struct TriangleMesh;
+
+using WarningSink = std::function<void(const FileLoc&, const std::string&)>;
+
+struct BuildOptions {
+  uint64_t seed = 0;
+  int sppOverride = 0;                 // 0: the sampler's own count
+  std::optional<Bounds2f> cropWindow;  // NDC, overrides the film's
+  // --tile: render only tile tileIndex of a grid of tileCount tiles (renderers/tile_grid.h) over
+  // the pixels the film would render (its crop window's); tileCount 0 renders them all.
+  int tileIndex = 0, tileCount = 0;
+  bool quick = false;       // quarter resolution, an eighth of the samples
+  std::string accelerator;  // overrides the Accelerator statement ("" = the scene's)
+  LoopProducer subdiv = LoopProducer::Book;  // the code that refines "loopsubdiv" shapes
+  HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact;  // --hyperboloid-normal
+  ClampedOctaves clampedOctaves = ClampedOctaves::Mean;            // --turbulence
+  unsigned aovs = 0;  // AovFlag bits, added to the Film's "aovs"
+  // scene_linear RGB -> working-space RGB for every colour parameter (--colorspace); none =
+  // identity.
+  std::optional<std::array<Float, 9>> colorMatrix;
+  // The materials' dialect (--dialect; default: detected) and plastic's coat Fresnel
+  // (--coat-fresnel).
+  MaterialModelOptions materialModels;
+  WarningSink warn;           // may be empty
+  int nThreads = 0;           // for the integrator's preprocess (0: all cores)
+  bool showProgress = false;  // the preprocess's progress on standard error
+  // Reads an image texture's file, converted to scene_linear from colorSpace ("" = the default
+  // rule: sRGB for integer pixels, linear for float ones). Empty: image textures are an error.
+  std::function<ImageBuffer(const std::string& path, const std::string& colorSpace)> loadImage;
+};
+
+// What was created, for --stats and for tests that check nothing unneeded was built.
+struct BuildStats {
+  std::map<std::string, long> shapesByKind;  // "sphere", "triangle", ...
+  long triangleMeshes = 0;
+  long lights = 0, areaLights = 0;
+  long materials = 0;
+  long textures = 0;
+  long volumeRegions = 0;                     // pbrt-v2 Volume statements
+  long namedMedia = 0, mediumInterfaces = 0;  // pbrt-v3 media created, shapes' interfaces
+  AggregateStats aggregate;
+  std::string report() const;
+};
+
+struct RenderJob {
+  RenderJob();
+  std::unique_ptr<SceneDescription> convertedDescription;  // set when colours were converted
+  ~RenderJob();
+  RenderJob(RenderJob&&) noexcept;
+  RenderJob& operator=(RenderJob&&) noexcept;
+
+  std::unique_ptr<TextureFactory> textures;
+  std::unique_ptr<MaterialFactory> materialFactory;  // lives as long as the materials
+  std::vector<std::unique_ptr<Material>> materials;
+  std::vector<std::unique_ptr<TriangleMesh>> meshes;
+  std::vector<std::unique_ptr<Shape>> shapes;
+  std::vector<std::unique_ptr<Light>> lights;
+  SceneGeometry geometry;                  // the aggregate's primitives and instances
+  std::unique_ptr<NamedMedia> namedMedia;  // pbrt-v3's media and interfaces the scene names
+  std::unique_ptr<Aggregate> aggregate;
+  std::unique_ptr<Scene> scene;
+  // pbrt-v2 Volume regions: the medium filling the scene and the integrator that renders it;
+  // both null in a scene without regions.
+  std::unique_ptr<Medium> volume;
+  std::unique_ptr<VolumeIntegrator> volumeIntegrator;
+  std::unique_ptr<Film> film;
+  // The pixels the whole image has (the film's crop window's): with BuildOptions::tileCount, what
+  // the tiles cover together; else the film's own pixel bounds.
+  Bounds2i imageRegion;
+  // The Film's output parameters ("compression", "half"); command-line flags override them.
+  std::string exrCompression = "zip";
+  bool exrHalf = false;
+  std::unique_ptr<Camera> camera;
+  std::unique_ptr<Sampler> sampler;
+  // Exactly one of these is set: the surface integrator the sampler renderer runs, or a renderer
+  // of the whole image (Metropolis, SPPM) that replaces both.
+  std::unique_ptr<SurfaceIntegrator> integrator;
+  std::unique_ptr<ImageRenderer> imageRenderer;
+  // Wall time of the integrator's preprocess (photon maps, VPLs) at build: renderJob counts it as
+  // render time, so that methods with and without a prepass compare by their whole cost.
+  double preprocessSeconds = 0;
+  // The least scale of camera ray differentials (SamplerRenderer): pbrt-v3's 1/8 for its
+  // dialect, whose texture filter widths then stop shrinking past 64 samples per pixel.
+  Float minDifferentialScale = 0;
+  BuildStats stats;
+};
+
+// Renders the job: with its image renderer when it has one, else with the sampler renderer and
+// its integrator; in doubling passes when options.afterPass or options.timeBudget is set.
+ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options);
+
+RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& options,
+                         const EmbreeDevice& device);
+
+}  // namespace candela

@@ -1,0 +1,24 @@
+// `Volume "name"` -> Medium and `VolumeIntegrator "name"` -> VolumeIntegrator (lrt draft ch. 12
+// and §16.7; pbrt-v2). Bad parameters and unknown names are SceneErrors at their location.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "integrators/volume_integrator.h"
+#include "media/medium.h"
+#include "parser/scene_description.h"
+
+namespace candela {
+
+// One region: "homogeneous", "exponential" or "volumegrid", in its volumeToWorld space.
+std::unique_ptr<Medium> createVolumeRegion(const VolumeDesc& desc);
+
+// The medium filling the scene: null without regions, the region itself for one, their
+// aggregate for several.
+std::unique_ptr<Medium> createSceneVolume(const std::vector<VolumeDesc>& volumes);
+
+// "emission" or "single".
+std::unique_ptr<VolumeIntegrator> createVolumeIntegrator(const PluginDesc& desc);
+
+}  // namespace candela
