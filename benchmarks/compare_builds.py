@@ -8,7 +8,7 @@ load on the machine falls on both), rays traced, and whether the images are the 
 Scenes are names under scenes/ (scenes/NAME/NAME.pbrt) or paths to .pbrt files, and with
 --scene-dir every .pbrt file in DIR (--scenes '' for those alone), rendered with --spp and
 --seed 1 at full resolution. Used to show what a change costs scenes that do not use it (a scene without media
-after media landed: README, "Participating media").
+after media landed: docs/scene-support.md, "Media and volpath").
 """
 import argparse
 import os

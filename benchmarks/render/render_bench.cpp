@@ -1,7 +1,7 @@
-// candela_render_bench: how fast candela renders against what Embree alone traces (README,
-// "Render speed"). For each case and thread count: candela's render (CPU seconds of the whole
-// process over the render, wall seconds, rays by kind), the Embree-only ceiling on the same scene
-// (embree_ceiling.h), and
+// candela_render_bench: how fast candela renders against what Embree alone traces
+// (docs/performance.md, "Render speed"). For each case and thread count: candela's render (CPU
+// seconds of the whole process over the render, wall seconds, rays by kind), the Embree-only
+// ceiling on the same scene (embree_ceiling.h), and
 //   fraction = (the CPU seconds the ceiling needs for the rays candela traced, kind by kind)
 //              / (candela's CPU seconds),
 // which is candela's rays per second as a fraction of the ceiling's at candela's own mix of

@@ -3,7 +3,7 @@
 // 2009). A scene selects one by its integrator or Renderer statement, and it then replaces the
 // sampler renderer and the surface integrator. Its image is still a pure function of (scene,
 // sample count, seed): the same bits for any thread count, tile size and crop window, or, where
-// that cannot hold, the README says so.
+// that cannot hold, docs/scene-support.md says so.
 #pragma once
 
 #include <string>

@@ -2,10 +2,10 @@
 // infinite light of radiance 1 reflects exactly 0.5 everywhere, up to its apex (a closed form no
 // self-shadowing may break). pbrt-v3's reference of the conformance scene quadrics-uv is darker
 // at the cone's tip (a pixel 2 pixels from the apex 0.54 of candela's there); this is the reason
-// candela does not follow it (README, "Deliberate differences"). Close-up of the apex, 24 x 24,
-// directlighting, 256 samples a pixel, fixed seed; pixels wholly on the cone (alpha 1): their
-// mean within 4 standard errors of 0.5, the standard error from the pixels' spread, and so is
-// the mean of the 16 covered pixels nearest the apex.
+// candela does not follow it (docs/pbrt-differences.md, "Deliberate differences"). Close-up of the
+// apex, 24 x 24, directlighting, 256 samples a pixel, fixed seed; pixels wholly on the cone (alpha
+// 1): their mean within 4 standard errors of 0.5, the standard error from the pixels' spread, and
+// so is the mean of the 16 covered pixels nearest the apex.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -56,9 +56,9 @@ int referenceSamples(const fs::path& scene) {
   return std::stoi(match[1]);
 }
 
-// Options that switch on pbrt-v3's behaviour where candela deliberately differs (README.md,
-// "Deliberate differences"): the scene is compared as pbrt-v3 renders it; the size of the
-// difference is measured separately.
+// Options that switch on pbrt-v3's behaviour where candela deliberately differs
+// (docs/pbrt-differences.md, "Deliberate differences"): the scene is compared as pbrt-v3 renders
+// it; the size of the difference is measured separately.
 std::string deliberateDifferenceOptions(const std::string& scene) {
   // The plastic coat's Fresnel with pbrt's reversed indices (pbrt-v3 issue #210).
   if (scene == "materials-a" || scene == "materials-b") return " --coat-fresnel pbrt";
@@ -86,10 +86,10 @@ ImageBuffer render(const fs::path& scene, int spp, int seed, const fs::path& out
 }
 
 // Parts of scenes that still render differently, and why: each is a defect to fix or a
-// deliberate difference that README.md lists. Regions are (x, y) on the 4 x 4 grid, y down: their
-// differences are reported, not failed. A difference confined to a few pixels names their 4 x 4
-// pixel blocks instead (x, y on the 32 x 32 block grid), which are left out of the comparison,
-// while the rest of their regions are still compared.
+// deliberate difference that docs/pbrt-differences.md lists. Regions are (x, y) on the 4 x 4 grid,
+// y down: their differences are reported, not failed. A difference confined to a few pixels names
+// their 4 x 4 pixel blocks instead (x, y on the 32 x 32 block grid), which are left out of the
+// comparison, while the rest of their regions are still compared.
 struct KnownDifference {
   std::set<std::pair<int, int>> regions;
   std::string reason;
@@ -112,7 +112,7 @@ const std::map<std::string, KnownDifference> kKnownDifferences = {
      {{},
       "the cone's apex: pbrt-v3 darkens the few pixels at the tip (u and v by one factor in each "
       "pixel: 0.52 at (63, 63), 0.46 at (64, 63)); a convex surface under a uniform sky reflects "
-      "its albedo up to the tip, as candela's does (README, Deliberate differences)",
+      "its albedo up to the tip, as candela's does (docs/pbrt-differences.md)",
       kConeApexBlocks}},
     {"quadrics-checker", {{}, "the cone's apex, as in quadrics-uv", kConeApexBlocks}},
     // Pixels (102..104, 26..43): blocks 25..26 across, 6..10 down.

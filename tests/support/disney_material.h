@@ -11,8 +11,8 @@
 
 namespace candela::test {
 
-// Directional albedo bounds that the model itself satisfies (README, "disney"), for colour 1.
-// The metal and the solid dielectric conserve energy (bound 1; a clearcoat adds at most a
+// Directional albedo bounds that the model itself satisfies (docs/scene-support.md, "disney"), for
+// colour 1. The metal and the solid dielectric conserve energy (bound 1; a clearcoat adds at most a
 // quarter of its weight: F <= 1, G <= G1 and the visible normals' normalisation). The rest do
 // not: Burley's diffuse with its retro-reflection reflects more than it receives on rough
 // surfaces (kBurleyDiffuseMax, by quadrature of base + retro at roughness 1, largest at 87.5

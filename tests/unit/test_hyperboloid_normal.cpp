@@ -71,7 +71,7 @@ TEST(HyperboloidNormal, PbrtsLeansOffTheSurfaceWhereTheSegmentIsNoRuling) {
       largest = std::max(largest, angleBetween(Vector3f(p.n), Vector3f(e.n)));
     }
   // Leaning by several degrees: enough to darken a matte surface under a sky by 0.3-1.5%
-  // (README, deliberate differences).
+  // (docs/pbrt-differences.md).
   EXPECT_GT(largest, 0.05);
 }
 
