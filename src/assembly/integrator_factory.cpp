@@ -23,9 +23,7 @@ namespace {
 // thread's stack, which two facing mirrors overflow somewhere past 10,000 levels.
 int maxDepthParam(const PluginDesc& desc, bool recursive, const char* name = "maxdepth") {
   const ParamSet& p = desc.params;
-  int maxDepth = p.getOneInt(name, 5);
-  if (maxDepth < 0)
-    throw SceneError(p.locationOf(name, desc.loc), std::string(name).append(" must be >= 0"));
+  int maxDepth = p.getOneInt(name, 5, ValueRange::atLeast(0), desc.loc);
   constexpr int kMaxRecursion = 1000;
   if (recursive && maxDepth > kMaxRecursion)
     throw SceneError(p.locationOf(name, desc.loc),
@@ -43,60 +41,43 @@ int maxDepthParam(const PluginDesc& desc, bool recursive, const char* name = "ma
 IrradianceCacheSettings irradianceCacheParams(const PluginDesc& desc) {
   const ParamSet& p = desc.params;
   IrradianceCacheSettings s;
-  auto fail = [&](const char* name, const std::string& what) {
-    throw SceneError(p.locationOf(name, desc.loc), what);
-  };
-  s.maxError = p.getOneFloat("maxerror", s.maxError);
-  if (!(s.maxError >= 0 && s.maxError < kInfinity))
-    fail("maxerror", "maxerror must be >= 0 and finite (0: cache nothing)");
-  s.minWeight = p.getOneFloat("minweight", s.minWeight);
-  if (!(s.minWeight >= 0 && s.minWeight < kInfinity))
-    fail("minweight", "minweight must be >= 0 and finite");
-  s.minPixelSpacing = p.getOneFloat("minpixelspacing", s.minPixelSpacing);
-  if (!(s.minPixelSpacing >= 0 && s.minPixelSpacing < kInfinity))
-    fail("minpixelspacing", "minpixelspacing must be >= 0 and finite");
-  s.maxPixelSpacing = p.getOneFloat("maxpixelspacing", s.maxPixelSpacing);
-  if (!(s.maxPixelSpacing > 0 && s.maxPixelSpacing < kInfinity))
-    fail("maxpixelspacing", "maxpixelspacing must be > 0 and finite");
+  const FileLoc& at = desc.loc;
+  s.maxError = p.getOneFloat("maxerror", s.maxError, ValueRange::nonNegative(), at);  // 0: none
+  s.minWeight = p.getOneFloat("minweight", s.minWeight, ValueRange::nonNegative(), at);
+  s.minPixelSpacing =
+      p.getOneFloat("minpixelspacing", s.minPixelSpacing, ValueRange::nonNegative(), at);
+  s.maxPixelSpacing =
+      p.getOneFloat("maxpixelspacing", s.maxPixelSpacing, ValueRange::positive(), at);
   if (s.minPixelSpacing > s.maxPixelSpacing)
-    fail(p.find("minpixelspacing") ? "minpixelspacing" : "maxpixelspacing",
-         "minpixelspacing (" + std::to_string(s.minPixelSpacing) +
-             ") must not exceed maxpixelspacing (" + std::to_string(s.maxPixelSpacing) + ")");
-  s.maxAngleDifference = p.getOneFloat("maxangledifference", s.maxAngleDifference);
-  if (!(s.maxAngleDifference > 0 && s.maxAngleDifference <= 90))
-    fail("maxangledifference", "maxangledifference must be in (0, 90] degrees");
-  s.nSamples = p.getOneInt("nsamples", s.nSamples);
-  if (s.nSamples < 1) fail("nsamples", "nsamples must be >= 1");
-  s.nFilter = p.getOneInt("nfilter", s.nFilter);
-  if (s.nFilter < 0) fail("nfilter", "nfilter must be >= 0");
+    throw SceneError(
+        p.locationOf(p.find("minpixelspacing") ? "minpixelspacing" : "maxpixelspacing", at),
+        "minpixelspacing (" + std::to_string(s.minPixelSpacing) +
+            ") must not exceed maxpixelspacing (" + std::to_string(s.maxPixelSpacing) + ")");
+  s.maxAngleDifference = p.getOneFloat("maxangledifference", s.maxAngleDifference,
+                                       ValueRange::aboveUpTo(0, 90), at);  // degrees
+  s.nSamples = p.getOneInt("nsamples", s.nSamples, ValueRange::atLeast(1), at);
+  s.nFilter = p.getOneInt("nfilter", s.nFilter, ValueRange::atLeast(0), at);
   s.nFilter = std::min(s.nFilter, s.nSamples - 1);  // the draft's clamp: keep one value
   s.maxSpecularDepth = maxDepthParam(desc, true, "maxspeculardepth");
-  s.maxIndirectDepth = p.getOneInt("maxindirectdepth", s.maxIndirectDepth);
-  if (s.maxIndirectDepth < 0) fail("maxindirectdepth", "maxindirectdepth must be >= 0");
+  s.maxIndirectDepth =
+      p.getOneInt("maxindirectdepth", s.maxIndirectDepth, ValueRange::atLeast(0), at);
   return s;
 }
 
 // pbrt-v2's "igi" parameters and defaults (pbrt 2e §15.4).
 std::unique_ptr<SurfaceIntegrator> createIgi(const PluginDesc& desc) {
   const ParamSet& p = desc.params;
-  auto fail = [&](const char* name, const char* what) {
-    throw SceneError(p.locationOf(name, desc.loc), what);
-  };
+  const FileLoc& at = desc.loc;
   IgiParameters igi;
-  igi.pathsPerSet = p.getOneInt("nlights", 64);
-  if (igi.pathsPerSet < 1) fail("nlights", "nlights must be >= 1");
-  igi.nSets = p.getOneInt("nsets", 4);
-  if (igi.nSets < 1) fail("nsets", "nsets must be >= 1");
+  igi.pathsPerSet = p.getOneInt("nlights", 64, ValueRange::atLeast(1), at);
+  igi.nSets = p.getOneInt("nsets", 4, ValueRange::atLeast(1), at);
   // The VPL sets are numbered with 32-bit indices.
   if (int64_t(igi.pathsPerSet) * igi.nSets > int64_t(1) << 30)
-    fail("nlights", "nlights * nsets must be at most 2^30");
-  igi.rrThreshold = p.getOneFloat("rrthreshold", 1e-4f);
-  if (!(igi.rrThreshold >= 0)) fail("rrthreshold", "rrthreshold must be >= 0");
+    throw SceneError(p.locationOf("nlights", at), "nlights * nsets must be at most 2^30");
+  igi.rrThreshold = p.getOneFloat("rrthreshold", 1e-4f, ValueRange::atLeast(0), at);
   igi.maxDepth = maxDepthParam(desc, true);
-  igi.gLimit = p.getOneFloat("glimit", 10);
-  if (!(igi.gLimit > 0)) fail("glimit", "glimit must be > 0");
-  igi.gatherSamples = p.getOneInt("gathersamples", 16);
-  if (igi.gatherSamples < 0) fail("gathersamples", "gathersamples must be >= 0");
+  igi.gLimit = p.getOneFloat("glimit", 10, ValueRange::greaterThan(0), at);
+  igi.gatherSamples = p.getOneInt("gathersamples", 16, ValueRange::atLeast(0), at);
   return std::make_unique<InstantGlobalIlluminationIntegrator>(igi);
 }
 
@@ -127,11 +108,7 @@ LightSampleStrategy pathLightStrategy(const PluginDesc& desc, SceneDialect diale
 
 // pbrt-v3's "rrthreshold" of path and volpath (default 1).
 Float rrThresholdParam(const PluginDesc& desc) {
-  Float t = desc.params.getOneFloat("rrthreshold", 1);
-  if (!(t >= 0 && t < kInfinity))
-    throw SceneError(desc.params.locationOf("rrthreshold", desc.loc),
-                     "rrthreshold must be >= 0 and finite");
-  return t;
+  return desc.params.getOneFloat("rrthreshold", 1, ValueRange::nonNegative(), desc.loc);
 }
 
 // pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and
@@ -212,13 +189,9 @@ std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc
   const ParamSet& p = desc.params;
   DipoleSubsurfaceSettings s;
   s.maxDepth = maxDepthParam(desc, true);
-  s.maxError = p.getOneFloat("maxerror", s.maxError);
-  if (!(s.maxError >= 0 && s.maxError < kInfinity))
-    throw SceneError(p.locationOf("maxerror", desc.loc), "maxerror must be >= 0 and finite");
-  s.minSampleDistance = p.getOneFloat("minsampledistance", s.minSampleDistance);
-  if (!(s.minSampleDistance > 0 && s.minSampleDistance < kInfinity))
-    throw SceneError(p.locationOf("minsampledistance", desc.loc),
-                     "minsampledistance must be > 0 and finite");
+  s.maxError = p.getOneFloat("maxerror", s.maxError, ValueRange::nonNegative(), desc.loc);
+  s.minSampleDistance =
+      p.getOneFloat("minsampledistance", s.minSampleDistance, ValueRange::positive(), desc.loc);
   std::string pointsFile = p.getOneString("pointsfile", "");
   if (!pointsFile.empty()) {
     FileLoc loc = p.locationOf("pointsfile", desc.loc);
@@ -274,18 +247,15 @@ std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& des
   if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
   if (desc.name == "ambientocclusion") {
     // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
-    int nSamples = p.getOneInt("nsamples", 2048);
-    if (nSamples < 1) throw SceneError(p.locationOf("nsamples", desc.loc), "nsamples must be >= 1");
-    Float maxDist = p.getOneFloat("maxdist", kInfinity);
-    if (!(maxDist > 0)) throw SceneError(p.locationOf("maxdist", desc.loc), "maxdist must be > 0");
+    int nSamples = p.getOneInt("nsamples", 2048, ValueRange::atLeast(1), desc.loc);
+    Float maxDist = p.getOneFloat("maxdist", kInfinity, ValueRange::greaterThan(0), desc.loc);
     // pbrt-v3's switch: cosine-weighted directions (default) or pbrt-v2's uniform ones.
     bool cosSample = p.getOneBool("cossample", true);
     return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist, cosSample);
   }
   if (desc.name == "ao") {
     // pbrt-v3's AOIntegrator: 64 directions, unbounded probes, the unnormalised cosine integral.
-    int nSamples = p.getOneInt("nsamples", 64);
-    if (nSamples < 1) throw SceneError(p.locationOf("nsamples", desc.loc), "nsamples must be >= 1");
+    int nSamples = p.getOneInt("nsamples", 64, ValueRange::atLeast(1), desc.loc);
     bool cosSample = p.getOneBool("cossample", true);
     return std::make_unique<AmbientOcclusionIntegrator>(
         nSamples, kInfinity, cosSample, AmbientOcclusionIntegrator::Estimate::UnoccludedCosine);

@@ -17,9 +17,7 @@ namespace candela {
 namespace {
 
 int readSampleCount(const ParamSet& p, const FileLoc& loc) {
-  int n = p.getOneInt("nsamples", 1);
-  if (n < 1) throw SceneError(p.locationOf("nsamples", loc), "nsamples must be >= 1");
-  return n;
+  return p.getOneInt("nsamples", 1, ValueRange::atLeast(1), loc);
 }
 
 // The "mapname" image, read relative to the scene file that named it; nullopt when none is named.

@@ -32,19 +32,11 @@ namespace candela {
 namespace {
 
 int atLeast(const PluginDesc& desc, const char* name, int def, int minimum) {
-  int v = desc.params.getOneInt(name, def);
-  if (v < minimum)
-    throw SceneError(desc.params.locationOf(name, desc.loc),
-                     std::string(name) + " must be >= " + std::to_string(minimum));
-  return v;
+  return desc.params.getOneInt(name, def, ValueRange::atLeast(minimum), desc.loc);
 }
 
 Float probability(const PluginDesc& desc, const char* name, Float def) {
-  Float v = desc.params.getOneFloat(name, def);
-  if (!(v >= 0 && v <= 1))
-    throw SceneError(desc.params.locationOf(name, desc.loc),
-                     std::string(name) + " must be in [0, 1]");
-  return v;
+  return desc.params.getOneFloat(name, def, ValueRange::within(0, 1), desc.loc);
 }
 
 const CameraImportance& importanceOf(const PluginDesc& desc, const ImageRendererContext& c) {
@@ -74,9 +66,7 @@ std::unique_ptr<ImageRenderer> createMltRenderer(const PluginDesc& desc,
   if (context.sppOverride > 0) s.mutationsPerPixel = context.sppOverride;
   s.mutationsPerPixel = quarterIfQuick(int(s.mutationsPerPixel), context);
   s.largeStepProbability = probability(desc, "largestepprobability", 0.3f);
-  s.sigma = desc.params.getOneFloat("sigma", 0.01f);
-  if (!(s.sigma > 0) || !std::isfinite(s.sigma))
-    throw SceneError(desc.params.locationOf("sigma", desc.loc), "sigma must be > 0");
+  s.sigma = desc.params.getOneFloat("sigma", 0.01f, ValueRange::positive(), desc.loc);
   s.bidirectional = true;
   return std::make_unique<MetropolisRenderer>(importanceOf(desc, context), s, context.seed);
 }

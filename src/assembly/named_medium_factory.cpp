@@ -26,24 +26,19 @@ std::unique_ptr<Medium> createNamedMedium(const MediumDesc& d) {
   // space, scaled by "scale".
   Spectrum sigmaA = p.getOneSpectrum("sigma_a", Spectrum(0.0011f, 0.0024f, 0.014f));
   Spectrum sigmaS = p.getOneSpectrum("sigma_s", Spectrum(2.55f, 3.21f, 3.77f));
-  Float scale = p.getOneFloat("scale", 1);
-  Float g = p.getOneFloat("g", 0);
+  Float scale = p.getOneFloat("scale", 1, ValueRange::nonNegative(), d.loc);
+  Float g = p.getOneFloat("g", 0, ValueRange::between(-1, 1), d.loc);
   for (int c = 0; c < 3; ++c) {
-    if (!(sigmaA[c] >= 0 && sigmaA[c] < kInfinity))
-      fail("sigma_a", "sigma_a must be >= 0 and finite in every channel");
-    if (!(sigmaS[c] >= 0 && sigmaS[c] < kInfinity))
-      fail("sigma_s", "sigma_s must be >= 0 and finite in every channel");
+    p.requireInRange("sigma_a", sigmaA[c], ValueRange::nonNegative(), d.loc);
+    p.requireInRange("sigma_s", sigmaS[c], ValueRange::nonNegative(), d.loc);
   }
-  if (!(scale >= 0 && scale < kInfinity)) fail("scale", "scale must be >= 0 and finite");
-  if (!(g > -1 && g < 1)) fail("g", "g must be in (-1, 1)");
   sigmaA *= scale;
   sigmaS *= scale;
   if (d.name == "homogeneous") return std::make_unique<HomogeneousMedium>(sigmaA, sigmaS, g);
 
-  int nx = p.getOneInt("nx", 1), ny = p.getOneInt("ny", 1), nz = p.getOneInt("nz", 1);
-  if (nx < 1) fail("nx", "nx must be >= 1");
-  if (ny < 1) fail("ny", "ny must be >= 1");
-  if (nz < 1) fail("nz", "nz must be >= 1");
+  int nx = p.getOneInt("nx", 1, ValueRange::atLeast(1), d.loc);
+  int ny = p.getOneInt("ny", 1, ValueRange::atLeast(1), d.loc);
+  int nz = p.getOneInt("nz", 1, ValueRange::atLeast(1), d.loc);
   constexpr int64_t kMaxSamples = int64_t(1) << 30;
   int64_t count = int64_t(nx) * ny * nz;
   if (count > kMaxSamples) fail("nx", "nx * ny * nz must be at most 2^30");
@@ -53,8 +48,10 @@ std::unique_ptr<Medium> createNamedMedium(const MediumDesc& d) {
     fail("density", "\"density\" has " + std::to_string(density.size()) +
                         " values; nx * ny * nz = " + std::to_string(count));
   for (size_t i = 0; i < density.size(); ++i)
-    if (!(density[i] >= 0 && density[i] < kInfinity))
-      fail("density", "density value " + std::to_string(i) + " must be >= 0 and finite");
+    if (!ValueRange::nonNegative().contains(density[i]))
+      fail("density", "\"density\" value " + std::to_string(i) + " must be " +
+                          ValueRange::nonNegative().describe() + " (got " +
+                          formatNumber(density[i]) + ")");
   Point3f p0 = p.getOnePoint3f("p0", Point3f(0, 0, 0));
   Point3f p1 = p.getOnePoint3f("p1", Point3f(1, 1, 1));
   if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z))

@@ -18,11 +18,7 @@ bool flagParam(const ParamSet& p, const std::string& name, bool def, const FileL
 }
 
 int countParam(const PluginDesc& desc, const std::string& name, int def, int min) {
-  int v = desc.params.getOneInt(name, def);
-  if (v < min)
-    throw SceneError(desc.params.locationOf(name, desc.loc),
-                     name + " must be >= " + std::to_string(min) + "; got " + std::to_string(v));
-  return v;
+  return desc.params.getOneInt(name, def, ValueRange::atLeast(min), desc.loc);
 }
 
 }  // namespace
@@ -55,11 +51,8 @@ PhotonMapSettings photonMapSettings(const PluginDesc& desc) {
   if (!(s.maxDist > 0) || !std::isfinite(s.maxDist * s.maxDist))
     throw SceneError(p.locationOf("maxdist", desc.loc),
                      "maxdist must be > 0 and finite; got " + std::to_string(s.maxDist));
-  s.gatherAngle = p.getOneFloat("gatherangle", s.gatherAngle);
-  if (!(s.gatherAngle > 0 && s.gatherAngle < 180))
-    throw SceneError(
-        p.locationOf("gatherangle", desc.loc),
-        "gatherangle must be in (0, 180) degrees; got " + std::to_string(s.gatherAngle));
+  s.gatherAngle =  // degrees
+      p.getOneFloat("gatherangle", s.gatherAngle, ValueRange::between(0, 180), desc.loc);
   s.finalGather = flagParam(p, "finalgather", s.finalGather, desc.loc);
   s.directWithPhotons = flagParam(p, "directwithphotons", s.directWithPhotons, desc.loc);
   return s;

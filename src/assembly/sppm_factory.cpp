@@ -12,19 +12,16 @@ namespace candela {
 std::unique_ptr<ImageRenderer> createSppmRenderer(const PluginDesc& desc,
                                                   const ImageRendererContext& context) {
   const ParamSet& p = desc.params;
-  auto fail = [&](const char* name, const std::string& what) {
-    throw SceneError(p.locationOf(name, desc.loc), std::string(name).append(" ").append(what));
-  };
   SppmSettings s;
-  s.iterations = p.getOneInt("numiterations", 64);
-  if (s.iterations < 1) fail("numiterations", "must be >= 1");
-  s.maxDepth = p.getOneInt("maxdepth", 5);
-  if (s.maxDepth < 0) fail("maxdepth", "must be >= 0");
+  s.iterations = p.getOneInt("numiterations", 64, ValueRange::atLeast(1), desc.loc);
+  s.maxDepth = p.getOneInt("maxdepth", 5, ValueRange::atLeast(0), desc.loc);
   s.photonsPerIteration = p.getOneInt("photonsperiteration", -1);
   if (s.photonsPerIteration == 0 || s.photonsPerIteration < -1)
-    fail("photonsperiteration", "must be >= 1, or -1 for the image's pixel count");
-  s.initialRadius = p.getOneFloat("radius", 1);
-  if (!(s.initialRadius > 0) || !std::isfinite(s.initialRadius)) fail("radius", "must be > 0");
+    throw SceneError(p.locationOf("photonsperiteration", desc.loc),
+                     "\"photonsperiteration\" must be at least 1, or -1 for the image's pixel "
+                     "count (got " +
+                         std::to_string(s.photonsPerIteration) + ")");
+  s.initialRadius = p.getOneFloat("radius", 1, ValueRange::positive(), desc.loc);
   (void)p.getOneInt("imagewritefrequency", std::numeric_limits<int>::max());
   if (context.sppOverride > 0)
     s.iterations = context.sppOverride;

@@ -21,8 +21,7 @@ namespace {
 Spectrum nonNegativeSpectrum(const PluginDesc& desc, const char* name) {
   Spectrum s = desc.params.getOneSpectrum(name, Spectrum(0));
   for (int i = 0; i < 3; ++i)
-    if (!(s[i] >= 0 && s[i] < kInfinity))
-      fail(desc, name, std::string(name) + " must be >= 0 and finite in every channel");
+    desc.params.requireInRange(name, s[i], ValueRange::nonNegative(), desc.loc);
   return s;
 }
 
@@ -31,11 +30,7 @@ Spectrum nonNegativeSpectrum(const PluginDesc& desc, const char* name) {
 PhaseFunction phaseParam(const PluginDesc& desc) {
   const ParamSet& p = desc.params;
   std::string name = p.getOneString("phase", "hg");
-  auto g = [&] {
-    Float v = p.getOneFloat("g", 0);
-    if (!(v > -1 && v < 1)) fail(desc, "g", "g must be in (-1, 1)");
-    return v;
-  };
+  auto g = [&] { return p.getOneFloat("g", 0, ValueRange::between(-1, 1), desc.loc); };
   if (name == "hg" || name == "henyey-greenstein") return PhaseFunction::henyeyGreenstein(g());
   if (name == "schlick") return PhaseFunction::schlick(g());
   if (name == "isotropic") return PhaseFunction::isotropic();
@@ -73,9 +68,8 @@ std::unique_ptr<Medium> createVolumeRegion(const VolumeDesc& desc) {
   if (desc.name == "homogeneous") return std::make_unique<HomogeneousVolume>(toWorld, extent, c);
 
   if (desc.name == "exponential") {
-    Float a = p.getOneFloat("a", 1), b = p.getOneFloat("b", 1);
-    if (!(a >= 0 && a < kInfinity)) fail(desc, "a", "a must be >= 0 and finite");
-    if (!std::isfinite(b)) fail(desc, "b", "b must be finite");
+    Float a = p.getOneFloat("a", 1, ValueRange::nonNegative(), desc.loc);
+    Float b = p.getOneFloat("b", 1, ValueRange::finite(), desc.loc);
     Vector3f up = p.getOneVector3f("updir", Vector3f(0, 1, 0));
     if (!(up.lengthSquared() > 0 && up.lengthSquared() < kInfinity))
       fail(desc, "updir", "updir must be a finite, nonzero vector");
@@ -86,8 +80,7 @@ std::unique_ptr<Medium> createVolumeRegion(const VolumeDesc& desc) {
   int n[3];
   const char* names[3] = {"nx", "ny", "nz"};
   for (int i = 0; i < 3; ++i) {
-    n[i] = p.getOneInt(names[i], 1);
-    if (n[i] < 1) fail(desc, names[i], std::string(names[i]) + " must be >= 1");
+    n[i] = p.getOneInt(names[i], 1, ValueRange::atLeast(1), desc.loc);
   }
   std::vector<Float> density = p.getFloatArray("density");
   long long expected = (long long)n[0] * n[1] * n[2];
@@ -95,8 +88,11 @@ std::unique_ptr<Medium> createVolumeRegion(const VolumeDesc& desc) {
     fail(desc, "density",
          "density has " + std::to_string(density.size()) +
              " values; nx*ny*nz = " + std::to_string(expected));
-  for (Float d : density)
-    if (!(d >= 0 && d < kInfinity)) fail(desc, "density", "density values must be >= 0 and finite");
+  for (size_t i = 0; i < density.size(); ++i)
+    if (!ValueRange::nonNegative().contains(density[i]))
+      fail(desc, "density",
+           "\"density\" value " + std::to_string(i) + " must be " +
+               ValueRange::nonNegative().describe() + " (got " + formatNumber(density[i]) + ")");
   return std::make_unique<VolumeGrid>(toWorld, extent, c, n[0], n[1], n[2], std::move(density));
 }
 
@@ -112,8 +108,7 @@ std::unique_ptr<VolumeIntegrator> createVolumeIntegrator(const PluginDesc& desc)
   static const std::vector<std::string> kKnown = {"emission", "single"};
   if (std::find(kKnown.begin(), kKnown.end(), desc.name) == kKnown.end())
     throwUnknownPlugin(desc.loc, "volume integrator", desc.name, kKnown);
-  Float step = desc.params.getOneFloat("stepsize", 1);
-  if (!(step > 0 && step < kInfinity)) fail(desc, "stepsize", "stepsize must be > 0 and finite");
+  Float step = desc.params.getOneFloat("stepsize", 1, ValueRange::positive(), desc.loc);
   if (desc.name == "emission") return std::make_unique<EmissionIntegrator>(step);
   return std::make_unique<SingleScatteringIntegrator>(step);
 }

@@ -95,6 +95,39 @@ const ParamItem* ParamSet::find(const std::string& name) const {
   return nullptr;
 }
 
+void ParamSet::requireInRange(const std::string& name, double value, const ValueRange& range,
+                              const FileLoc& fallback) const {
+  if (!range.contains(value))
+    throw SceneError(locationOf(name, fallback), "\"" + name + "\" must be " + range.describe() +
+                                                     " (got " + formatNumber(value) + ")");
+}
+
+Float ParamSet::getOneFloat(const std::string& name, Float def, const ValueRange& range,
+                            const FileLoc& fallback) const {
+  Float v = getOneFloat(name, def);
+  requireInRange(name, v, range, fallback);
+  return v;
+}
+
+int ParamSet::getOneInt(const std::string& name, int def, const ValueRange& range,
+                        const FileLoc& fallback) const {
+  int v = getOneInt(name, def);
+  requireInRange(name, v, range, fallback);
+  return v;
+}
+
+std::string ParamSet::getOneString(const std::string& name, const std::string& def,
+                                   const std::vector<std::string>& oneOf,
+                                   const FileLoc& fallback) const {
+  std::string v = getOneString(name, def);
+  for (const std::string& known : oneOf)
+    if (v == known) return v;
+  std::string list;
+  for (const std::string& known : oneOf) list += (list.empty() ? "" : ", ") + known;
+  throw SceneError(locationOf(name, fallback),
+                   "\"" + name + "\" must be one of " + list + " (got \"" + v + "\")");
+}
+
 FileLoc ParamSet::locationOf(const std::string& name, const FileLoc& fallback) const {
   for (const ParamItem& item : items_)
     if (item.name == name) return item.loc;

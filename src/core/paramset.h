@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/spectrum.h"
+#include "core/value_range.h"
 #include "core/vector.h"
 
 namespace candela {
@@ -66,6 +67,20 @@ class ParamSet {
   // The texture name of a "texture" item, or "" when absent or of another type (a material then
   // asks for a constant value of the same name).
   std::string getTexture(const std::string& name) const;
+
+  // Range-checked single values: the value, or def when the name is absent; outside range a
+  // SceneError at the value's location (fallback when absent), worded one way for every
+  // parameter: "\"nsamples\" must be at least 1 (got 0)".
+  Float getOneFloat(const std::string& name, Float def, const ValueRange& range,
+                    const FileLoc& fallback) const;
+  int getOneInt(const std::string& name, int def, const ValueRange& range,
+                const FileLoc& fallback) const;
+  // One of the given names: "\"strategy\" must be one of all, one (got \"some\")".
+  std::string getOneString(const std::string& name, const std::string& def,
+                           const std::vector<std::string>& oneOf, const FileLoc& fallback) const;
+  // The same rule for a value derived from the parameter name (or checked after reading it).
+  void requireInRange(const std::string& name, double value, const ValueRange& range,
+                      const FileLoc& fallback) const;
 
   // Arrays: empty when absent.
   std::vector<Float> getFloatArray(const std::string& name) const;

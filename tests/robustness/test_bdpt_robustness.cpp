@@ -86,10 +86,10 @@ const char* kWorld = "WorldBegin\nLightSource \"point\"\nShape \"sphere\"\nWorld
 TEST(BdptErrors, NegativeMaxDepthIsLocated) {
   expectSceneError(std::string("Camera \"perspective\"\n") +
                        "Integrator \"bdpt\"\n  \"integer maxdepth\" [-1]\n" + kWorld,
-                   ":3:", "maxdepth must be >= 0");
+                   ":3:", "\"maxdepth\" must be at least 0 (got -1)");
   expectSceneError(std::string("Camera \"perspective\"\n") +
                        "SurfaceIntegrator \"bidirectional\" \"integer maxdepth\" [-2]\n" + kWorld,
-                   ":2:", "maxdepth must be >= 0");
+                   ":2:", "\"maxdepth\" must be at least 0 (got -2)");
 }
 
 TEST(BdptErrors, UnknownLightSamplerIsLocated) {

@@ -137,7 +137,8 @@ std::string mediumScene(const std::string& medium, const std::string& interfaceN
 TEST(MediaScenes, BadInputIsALocatedError) {
   expectLocatedError(mediumScene("\"homogeneous\" \"rgb sigma_a\" [-1 0 0]"), 4, "sigma_a");
   expectLocatedError(mediumScene("\"homogeneous\" \"rgb sigma_s\" [0 -2 0]"), 4, "sigma_s");
-  expectLocatedError(mediumScene("\"homogeneous\" \"float g\" [1]"), 4, "g must");
+  expectLocatedError(mediumScene("\"homogeneous\" \"float g\" [1]"), 4,
+                     "\"g\" must be within (-1, 1) (got 1)");
   expectLocatedError(mediumScene("\"homogeneous\" \"float scale\" [-1]"), 4, "scale");
   expectLocatedError(mediumScene("\"heterogeneous\" \"integer nx\" [2] \"float density\" [1 2 3]"),
                      4, "density");
