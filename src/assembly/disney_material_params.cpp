@@ -1,43 +1,23 @@
 #include "assembly/disney_material_params.h"
 
-#include <cmath>
-
+#include "assembly/constant_values.h"
 #include "materials/disney.h"
 #include "textures/texture.h"
 
 namespace candela {
 
-namespace {
-
-// A constant parameter's values (a "texture" reference has none) must lie in [lo, hi].
-void requireRange(const MaterialDesc& d, const std::string& name, Float lo, Float hi) {
-  const ParamItem* item = d.params.find(name);
-  if (!item || item->type == ParamType::Texture) return;
-  for (Float v : item->floats)
-    if (!(v >= lo && v <= hi))
-      throw SceneError(item->loc, "disney: \"" + name + "\" must be in [" + std::to_string(lo) +
-                                      ", " + std::to_string(hi) + "] (got " + std::to_string(v) +
-                                      ")");
-}
-
-}  // namespace
-
 std::unique_ptr<Material> createDisneyMaterial(
     const MaterialDesc& d, TextureFactory& textures, const Texture<Float>* bump,
     const std::function<void(const FileLoc&, const std::string&)>& warn) {
   auto unit = [&](const char* name, Float def) {
-    requireRange(d, name, 0, 1);
+    requireConstantValues(d.params, name, ValueRange::within(0, 1));
     return textures.scalar(d, name, def);
   };
   // A colour converted from a spectrum may come out a little above 1: clamped, not an error.
-  requireRange(d, "color", 0, kInfinity);
-  requireRange(d, "difftrans", 0, 2);
-  requireRange(d, "scatterdistance", 0, kInfinity);
-  if (const ParamItem* eta = d.params.find("eta"); eta && eta->type != ParamType::Texture)
-    for (Float v : eta->floats)
-      if (!(v > 0 && std::isfinite(v)))
-        throw SceneError(eta->loc, "disney: \"eta\" must be positive and finite (got " +
-                                       std::to_string(v) + ")");
+  requireConstantValues(d.params, "color", ValueRange::atLeast(0));
+  requireConstantValues(d.params, "difftrans", ValueRange::within(0, 2));
+  requireConstantValues(d.params, "scatterdistance", ValueRange::atLeast(0));
+  requireConstantValues(d.params, "eta", ValueRange::positive());
   DisneyMaterial::Textures t;
   t.color = textures.spectrum(d, "color", Spectrum(0.5f));
   t.metallic = unit("metallic", 0);

@@ -1,8 +1,6 @@
 #include "assembly/hair_material_params.h"
 
-#include <cmath>
-#include <limits>
-
+#include "assembly/constant_values.h"
 #include "materials/hair.h"
 
 namespace candela {
@@ -16,43 +14,31 @@ bool written(const MaterialDesc& d, const std::string& name) {
   return false;
 }
 
-// A constant (not a texture reference) must have every value in [lo, hi], or (lo, hi] when
-// lowOpen.
-void requireRange(const MaterialDesc& d, const std::string& name, Float lo, Float hi, bool lowOpen,
-                  const std::string& what) {
-  const ParamItem* item = d.params.find(name);
-  if (!item || item->type == ParamType::Texture) return;
-  for (Float v : item->floats)
-    if (!(std::isfinite(v) && (lowOpen ? v > lo : v >= lo) && v <= hi))
-      throw SceneError(
-          item->loc, "hair: \"" + name + "\" must be " + what + " (got " + std::to_string(v) + ")");
-}
-
 }  // namespace
 
 std::unique_ptr<Material> createHairMaterial(const MaterialDesc& d, TextureFactory& textures) {
-  constexpr Float kInf = std::numeric_limits<Float>::infinity();
   auto scalar = [&](const char* name, Float def) { return textures.scalar(d, name, def); };
   HairAbsorption a;
   if (written(d, "sigma_a")) {
-    requireRange(d, "sigma_a", 0, kInf, false, "non-negative and finite in every channel");
+    requireConstantValues(d.params, "sigma_a", ValueRange::nonNegative());
     a.sigmaA = textures.spectrum(d, "sigma_a", Spectrum(0));
   } else if (written(d, "color")) {
-    requireRange(d, "color", 0, 1, false, "in [0, 1] in every channel");
+    requireConstantValues(d.params, "color", ValueRange::within(0, 1));
     a.color = textures.spectrum(d, "color", Spectrum(0));
   } else if (written(d, "eumelanin") || written(d, "pheomelanin")) {
-    requireRange(d, "eumelanin", 0, kInf, false, "non-negative and finite");
-    requireRange(d, "pheomelanin", 0, kInf, false, "non-negative and finite");
+    requireConstantValues(d.params, "eumelanin", ValueRange::nonNegative());
+    requireConstantValues(d.params, "pheomelanin", ValueRange::nonNegative());
     a.eumelanin = scalar("eumelanin", 0);
     a.pheomelanin = scalar("pheomelanin", 0);
   } else {
     // Brown hair (pbrt-v3's default).
     a.eumelanin = scalar("eumelanin", 1.3f);
   }
-  requireRange(d, "eta", 1, kInf, false, "at least 1 and finite");
-  requireRange(d, "beta_m", 0, 1, true, "in (0, 1]");
-  requireRange(d, "beta_n", 0, 1, true, "in (0, 1]");
-  requireRange(d, "alpha", -kInf, kInf, false, "finite");
+  requireConstantValues(d.params, "eta", ValueRange::atLeast(1));
+  requireConstantValues(d.params, "eta", ValueRange::finite());
+  requireConstantValues(d.params, "beta_m", ValueRange::aboveUpTo(0, 1));
+  requireConstantValues(d.params, "beta_n", ValueRange::aboveUpTo(0, 1));
+  requireConstantValues(d.params, "alpha", ValueRange::finite());
   return std::make_unique<HairMaterial>(a, scalar("eta", 1.55f), scalar("beta_m", 0.3f),
                                         scalar("beta_n", 0.3f), scalar("alpha", 2));
 }

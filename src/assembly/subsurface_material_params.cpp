@@ -1,7 +1,6 @@
 #include "assembly/subsurface_material_params.h"
 
-#include <cmath>
-
+#include "assembly/constant_values.h"
 #include "materials/measured_subsurface.h"
 #include "materials/subsurface.h"
 
@@ -9,25 +8,9 @@ namespace candela {
 
 namespace {
 
-// A constant colour parameter must have no negative or non-finite component.
-void requireNonNegativeSpectrum(const MaterialDesc& d, const std::string& name) {
-  const ParamItem* item = d.params.find(name);
-  if (!item || item->type != ParamType::Spectrum) return;
-  for (Float v : item->floats)
-    if (!(v >= 0 && std::isfinite(v)))
-      throw SceneError(item->loc, d.name + ": \"" + name +
-                                      "\" must be non-negative and finite in every channel (got " +
-                                      std::to_string(v) + ")");
-}
-
 // A constant float parameter must be positive and finite.
 Float positiveFloat(const MaterialDesc& d, const std::string& name, Float def) {
-  Float v = d.params.getOneFloat(name, def);
-  if (!(v > 0 && std::isfinite(v)))
-    throw SceneError(
-        d.params.locationOf(name, d.loc),
-        d.name + ": \"" + name + "\" must be positive and finite (got " + std::to_string(v) + ")");
-  return v;
+  return d.params.getOneFloat(name, def, ValueRange::positive(), d.loc);
 }
 
 }  // namespace
@@ -58,8 +41,8 @@ std::unique_ptr<Material> createSubsurfaceMaterial(const MaterialDesc& d, Textur
     }
     medium = *found;
   }
-  requireNonNegativeSpectrum(d, "sigma_a");
-  requireNonNegativeSpectrum(d, "sigma_prime_s");
+  requireConstantValues(d.params, "sigma_a", ValueRange::nonNegative());
+  requireConstantValues(d.params, "sigma_prime_s", ValueRange::nonNegative());
   Float scale = positiveFloat(d, "scale", 1);
   return std::make_unique<SubsurfaceMaterial>(
       scale, textures.spectrum(d, "sigma_a", medium.sigmaA),

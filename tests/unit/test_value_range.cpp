@@ -127,3 +127,28 @@ TEST(ParamSetRanges, FactoriesWordTheSameRuleAlike) {
 }
 
 }  // namespace
+
+namespace {
+
+// Materials whose parameters may be textures check their constant values the same way.
+TEST(ParamSetRanges, MaterialConstantsAreCheckedAlike) {
+  const struct {
+    std::string material, expected;
+  } cases[] = {
+      {"Material \"disney\" \"float metallic\" [2]", "\"metallic\" must be within [0, 1] (got 2)"},
+      {"Material \"hair\" \"float beta_m\" [0]", "\"beta_m\" must be within (0, 1] (got 0)"},
+      {"Material \"subsurface\" \"float scale\" [-1]",
+       "\"scale\" must be positive and finite (got -1)"},
+      {"Material \"subsurface\" \"rgb sigma_a\" [1 -1 1]",
+       "\"sigma_a\" must be non-negative and finite (got -1)"},
+  };
+  for (const auto& c : cases) {
+    std::string text = "Camera \"perspective\"\nWorldBegin\nLightSource \"point\"\n" + c.material +
+                       "\nShape \"sphere\"\nWorldEnd\n";
+    std::string message = errorOf([&] { test::buildSceneText(text); });
+    EXPECT_NE(message.find(":4:"), std::string::npos) << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.material << ": " << message;
+  }
+}
+
+}  // namespace
