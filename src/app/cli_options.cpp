@@ -1,10 +1,24 @@
 #include "app/cli_options.h"
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 
 #include "accel/aggregate_factory.h"
+#include "assembly/plugin_registry.h"
+#include "parser/scene_dialect.h"
 
 namespace candela {
+
+CompatibilityProfile CliOptions::compatibility() const {
+  CompatibilityProfile p;
+  p.dialect = parseSceneDialect(dialect);
+  p.plasticCoat = coatFresnel == "pbrt" ? CoatFresnel::ReversedAsPbrt : CoatFresnel::Exact;
+  p.hyperboloidNormal =
+      hyperboloidNormal == "pbrt" ? HyperboloidNormal::SegmentAsPbrt : HyperboloidNormal::Exact;
+  p.clampedOctaves = turbulence == "pbrt" ? ClampedOctaves::AsPbrt : ClampedOctaves::Mean;
+  p.subdiv = subdiv == "opensubdiv" ? LoopProducer::OpenSubdiv : LoopProducer::Book;
+  return p;
+}
 
 std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   CLI::App app{
@@ -90,11 +104,35 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   app.add_option("--sample-range", sampleRange,
                  "Take only samples A to B (A-B, from 0) of each pixel; the EXR keeps the "
                  "pixels' sums for `candela merge`");
+  std::string listKind, describeName;
+  CLI::Option* list =
+      app.add_option("--list-plugins", listKind,
+                     "List every plug-in (or those of KIND: shape, material, texture, light, "
+                     "integrator, ...) with its dialects, and exit")
+          ->expected(0, 1);
+  app.add_option("--describe", describeName,
+                 "Print the parameters of the plug-in NAME (or KIND/NAME): type, default, rule "
+                 "and dialect, and exit");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  }
+  if (list->count() > 0 || !describeName.empty()) {
+    std::string text = list->count() > 0 ? listPlugins(listKind) : describePlugins(describeName);
+    if (text.empty()) {
+      std::string known;
+      for (const PluginKind& k : pluginKinds())
+        known += (known.empty() ? "" : ", ") + std::string(k.kind);
+      std::fprintf(stderr, "candela: error: %s (kinds: %s)\n",
+                   list->count() > 0 ? ("no plug-in kind '" + listKind + "'").c_str()
+                                     : ("no plug-in called '" + describeName + "'").c_str(),
+                   known.c_str());
+      return 2;
+    }
+    std::fputs(text.c_str(), stdout);
+    return 0;
   }
   if (crop.size() == 4) {
     for (float c : crop)

@@ -8,6 +8,7 @@
 
 #include "app/render_piece.h"
 #include "core/bounds.h"
+#include "core/compatibility.h"
 
 namespace candela {
 
@@ -42,6 +43,9 @@ struct CliOptions {
   // some of the scene's frames, some of each pixel's samples.
   std::optional<TileIndex> tile;
   std::optional<IndexRange> frames, sampleRange;
+  // --dialect, --coat-fresnel, --hyperboloid-normal, --turbulence and --subdiv as the build takes
+  // them.
+  CompatibilityProfile compatibility() const;
   bool progressive() const {
     return !reference.empty() || !errorLog.empty() || timeBudget > 0 || targetError > 0;
   }

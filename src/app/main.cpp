@@ -85,14 +85,8 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   if (cli.tile) build.tileIndex = cli.tile->index, build.tileCount = cli.tile->count;
   build.quick = cli.quick;
   build.accelerator = cli.accelerator;
-  build.subdiv = cli.subdiv == "opensubdiv" ? LoopProducer::OpenSubdiv : LoopProducer::Book;
-  build.hyperboloidNormal =
-      cli.hyperboloidNormal == "pbrt" ? HyperboloidNormal::SegmentAsPbrt : HyperboloidNormal::Exact;
-  build.clampedOctaves = cli.turbulence == "pbrt" ? ClampedOctaves::AsPbrt : ClampedOctaves::Mean;
+  build.compatibility = cli.compatibility();
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
-  build.materialModels.dialect = parseSceneDialect(cli.dialect);
-  build.materialModels.plasticCoat =
-      cli.coatFresnel == "pbrt" ? CoatFresnel::ReversedAsPbrt : CoatFresnel::Exact;
   build.colorMatrix = writer.workingSpaceMatrix();
   build.loadImage = [&writer, &inputs](const std::string& path, const std::string& colorSpace) {
     inputs.push_back(path);

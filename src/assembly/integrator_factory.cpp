@@ -1,4 +1,6 @@
-// SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator.
+// SurfaceIntegrator / Integrator "name" -> SurfaceIntegrator, through integratorPlugins(), and
+// the create functions that table points to.
+#include "assembly/integrator_plugins.h"
 #include "assembly/photon_map_params.h"
 #include "assembly/plugin_factories.h"
 #include "core/scene_path.h"
@@ -20,21 +22,10 @@ namespace {
 // "maxdepth" is read only by the integrators that have it, so that anywhere else it is reported
 // as unused.
 // recursive: the integrator recurses once per level (whitted, directlighting), on a worker
-// thread's stack, which two facing mirrors overflow somewhere past 10,000 levels.
+// thread's stack, which two facing mirrors overflow somewhere past 10,000 levels; 1000 is safe.
 int maxDepthParam(const PluginDesc& desc, bool recursive, const char* name = "maxdepth") {
-  const ParamSet& p = desc.params;
-  int maxDepth = p.getOneInt(name, 5, ValueRange::atLeast(0), desc.loc);
-  constexpr int kMaxRecursion = 1000;
-  if (recursive && maxDepth > kMaxRecursion)
-    throw SceneError(p.locationOf(name, desc.loc),
-                     std::string(name)
-                         .append(" must be at most ")
-                         .append(std::to_string(kMaxRecursion))
-                         .append(" for '")
-                         .append(desc.name)
-                         .append("', which recurses once per level; got ")
-                         .append(std::to_string(maxDepth)));
-  return maxDepth;
+  return desc.params.getOneInt(
+      name, 5, recursive ? ValueRange::within(0, 1000) : ValueRange::atLeast(0), desc.loc);
 }
 
 // "irradiancecache" with both dialects' parameters (their mapping: irradiance_cache_settings.h).
@@ -64,8 +55,11 @@ IrradianceCacheSettings irradianceCacheParams(const PluginDesc& desc) {
   return s;
 }
 
+}  // namespace
+
 // pbrt-v2's "igi" parameters and defaults (pbrt 2e §15.4).
-std::unique_ptr<SurfaceIntegrator> createIgi(const PluginDesc& desc) {
+std::unique_ptr<SurfaceIntegrator> createIgiIntegrator(const PluginDesc& desc, const Camera*,
+                                                       const Bounds2i&, SceneDialect) {
   const ParamSet& p = desc.params;
   const FileLoc& at = desc.loc;
   IgiParameters igi;
@@ -81,22 +75,15 @@ std::unique_ptr<SurfaceIntegrator> createIgi(const PluginDesc& desc) {
   return std::make_unique<InstantGlobalIlluminationIntegrator>(igi);
 }
 
-}  // namespace
-
 namespace {
 
 // A light sample strategy parameter (lightsamplestrategy: uniform, power or spatial), a located
 // SceneError for any other name.
 LightSampleStrategy lightStrategyParam(const PluginDesc& desc, const char* name,
                                        const char* byDefault) {
-  const ParamSet& p = desc.params;
-  std::string strategy = p.getOneString(name, byDefault);
-  std::optional<LightSampleStrategy> named = lightSampleStrategyNamed(strategy);
-  if (!named)
-    throw SceneError(
-        p.locationOf(name, desc.loc),
-        "unknown " + std::string(name) + " '" + strategy + "' (known: uniform, power, spatial)");
-  return *named;
+  std::string strategy =
+      desc.params.getOneString(name, byDefault, {"uniform", "power", "spatial"}, desc.loc);
+  return *lightSampleStrategyNamed(strategy);
 }
 
 // pbrt-v3's "lightsamplestrategy" of path and volpath: "spatial" in pbrt-v3 scenes that name none,
@@ -111,15 +98,16 @@ Float rrThresholdParam(const PluginDesc& desc) {
   return desc.params.getOneFloat("rrthreshold", 1, ValueRange::nonNegative(), desc.loc);
 }
 
-// pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and
-// pbrt-v3 "bdpt" (maxdepth, lightsamplestrategy, visualizestrategies, visualizeweights).
-std::unique_ptr<SurfaceIntegrator> createBdpt(const PluginDesc& desc, const Camera* camera,
-                                              const Bounds2i& pixelBounds) {
+// pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and,
+// with v3Params, pbrt-v3 "bdpt" (maxdepth, lightsamplestrategy, visualizestrategies,
+// visualizeweights).
+std::unique_ptr<SurfaceIntegrator> bdptIntegrator(const PluginDesc& desc, const Camera* camera,
+                                                  const Bounds2i& pixelBounds, bool v3Params) {
   const ParamSet& p = desc.params;
   int maxDepth = maxDepthParam(desc, false);
   LightSampleStrategy strategy = LightSampleStrategy::Power;
   BdptIntegrator::Visualize visualize = BdptIntegrator::Visualize::None;
-  if (desc.name == "bdpt") {
+  if (v3Params) {
     // pbrt-v3: the weighted images win when both are asked for.
     if (p.getOneBool("visualizestrategies", false))
       visualize = BdptIntegrator::Visualize::Strategies;
@@ -184,8 +172,25 @@ std::vector<SubsurfacePoint> readSubsurfacePointsFile(const std::string& path, c
   return points;
 }
 
+}  // namespace
+
+std::unique_ptr<SurfaceIntegrator> createBdptIntegrator(const PluginDesc& desc,
+                                                        const Camera* camera,
+                                                        const Bounds2i& pixelBounds, SceneDialect) {
+  return bdptIntegrator(desc, camera, pixelBounds, true);
+}
+
+std::unique_ptr<SurfaceIntegrator> createBidirectionalIntegrator(const PluginDesc& desc,
+                                                                 const Camera* camera,
+                                                                 const Bounds2i& pixelBounds,
+                                                                 SceneDialect) {
+  return bdptIntegrator(desc, camera, pixelBounds, false);
+}
+
 // pbrt-v2's "dipolesubsurface" (pbrt 2e §16.5).
-std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc) {
+std::unique_ptr<SurfaceIntegrator> createDipoleSubsurfaceIntegrator(const PluginDesc& desc,
+                                                                    const Camera*, const Bounds2i&,
+                                                                    SceneDialect) {
   const ParamSet& p = desc.params;
   DipoleSubsurfaceSettings s;
   s.maxDepth = maxDepthParam(desc, true);
@@ -204,7 +209,8 @@ std::unique_ptr<SurfaceIntegrator> createDipoleSubsurface(const PluginDesc& desc
 // pbrt-v3's "rrthreshold" and "lightsamplestrategy" (default 1 and "spatial" in pbrt-v3 scenes;
 // pbrt-v2's path has neither: every path faces roulette, lights are chosen uniformly, unless the
 // scene gives the parameters).
-std::unique_ptr<SurfaceIntegrator> createPath(const PluginDesc& desc, SceneDialect dialect) {
+std::unique_ptr<SurfaceIntegrator> createPathIntegrator(const PluginDesc& desc, const Camera*,
+                                                        const Bounds2i&, SceneDialect dialect) {
   const ParamSet& p = desc.params;
   const bool v3 = dialect == SceneDialect::PbrtV3;
   PathSettings s;
@@ -215,62 +221,77 @@ std::unique_ptr<SurfaceIntegrator> createPath(const PluginDesc& desc, SceneDiale
   return std::make_unique<PathIntegrator>(s);
 }
 
-}  // namespace
+// pbrt-v3's VolPathIntegrator parameters and defaults.
+std::unique_ptr<SurfaceIntegrator> createVolPathIntegrator(const PluginDesc& desc, const Camera*,
+                                                           const Bounds2i&, SceneDialect dialect) {
+  // One at a time: a call's arguments are read in no set order, and the first bad one is reported.
+  int maxDepth = maxDepthParam(desc, false);
+  Float rrThreshold = rrThresholdParam(desc);
+  LightSampleStrategy strategy = pathLightStrategy(desc, dialect);
+  return std::make_unique<VolPathIntegrator>(maxDepth, rrThreshold, strategy);
+}
+
+std::unique_ptr<SurfaceIntegrator> createDirectLightingIntegrator(const PluginDesc& desc,
+                                                                  const Camera*, const Bounds2i&,
+                                                                  SceneDialect) {
+  int maxDepth = maxDepthParam(desc, true);
+  std::string strategy = desc.params.getOneString("strategy", "all", {"all", "one"}, desc.loc);
+  DirectLightingIntegrator::Strategy s = strategy == "all"
+                                             ? DirectLightingIntegrator::Strategy::All
+                                             : DirectLightingIntegrator::Strategy::One;
+  return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
+}
+
+std::unique_ptr<SurfaceIntegrator> createWhittedIntegrator(const PluginDesc& desc, const Camera*,
+                                                           const Bounds2i&, SceneDialect) {
+  return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
+}
+
+std::unique_ptr<SurfaceIntegrator> createAmbientOcclusionIntegrator(const PluginDesc& desc,
+                                                                    const Camera*, const Bounds2i&,
+                                                                    SceneDialect) {
+  const ParamSet& p = desc.params;
+  // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
+  int nSamples = p.getOneInt("nsamples", 2048, ValueRange::atLeast(1), desc.loc);
+  Float maxDist = p.getOneFloat("maxdist", kInfinity, ValueRange::greaterThan(0), desc.loc);
+  // pbrt-v3's switch: cosine-weighted directions (default) or pbrt-v2's uniform ones.
+  bool cosSample = p.getOneBool("cossample", true);
+  return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist, cosSample);
+}
+
+// pbrt-v3's AOIntegrator: 64 directions, unbounded probes, the unnormalised cosine integral.
+std::unique_ptr<SurfaceIntegrator> createAoIntegrator(const PluginDesc& desc, const Camera*,
+                                                      const Bounds2i&, SceneDialect) {
+  const ParamSet& p = desc.params;
+  int nSamples = p.getOneInt("nsamples", 64, ValueRange::atLeast(1), desc.loc);
+  bool cosSample = p.getOneBool("cossample", true);
+  return std::make_unique<AmbientOcclusionIntegrator>(
+      nSamples, kInfinity, cosSample, AmbientOcclusionIntegrator::Estimate::UnoccludedCosine);
+}
+
+std::unique_ptr<SurfaceIntegrator> createIrradianceCacheIntegrator(const PluginDesc& desc,
+                                                                   const Camera*, const Bounds2i&,
+                                                                   SceneDialect) {
+  return std::make_unique<IrradianceCacheIntegrator>(irradianceCacheParams(desc));
+}
+
+// pbrt-v2 registers its photon mapper under both names; nothing differs.
+std::unique_ptr<SurfaceIntegrator> createPhotonMapIntegrator(const PluginDesc& desc, const Camera*,
+                                                             const Bounds2i&, SceneDialect) {
+  return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
+}
 
 std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
                                                            const Camera* camera,
                                                            const Bounds2i& pixelBounds,
                                                            SceneDialect dialect) {
-  const ParamSet& p = desc.params;
-  if (desc.name == "bidirectional" || desc.name == "bdpt")
-    return createBdpt(desc, camera, pixelBounds);
-  if (desc.name == "directlighting") {
-    int maxDepth = maxDepthParam(desc, true);
-    std::string strategy = p.getOneString("strategy", "all");
-    DirectLightingIntegrator::Strategy s;
-    if (strategy == "all")
-      s = DirectLightingIntegrator::Strategy::All;
-    else if (strategy == "one")
-      s = DirectLightingIntegrator::Strategy::One;
-    else
-      throw SceneError(
-          p.locationOf("strategy", desc.loc),
-          std::string("unknown strategy '").append(strategy).append("' (known: all, one)"));
-    return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
-  }
-  if (desc.name == "path") return createPath(desc, dialect);
-  if (desc.name == "volpath") {
-    // pbrt-v3's VolPathIntegrator parameters and defaults.
-    return std::make_unique<VolPathIntegrator>(maxDepthParam(desc, false), rrThresholdParam(desc),
-                                               pathLightStrategy(desc, dialect));
-  }
-  if (desc.name == "whitted") return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
-  if (desc.name == "ambientocclusion") {
-    // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
-    int nSamples = p.getOneInt("nsamples", 2048, ValueRange::atLeast(1), desc.loc);
-    Float maxDist = p.getOneFloat("maxdist", kInfinity, ValueRange::greaterThan(0), desc.loc);
-    // pbrt-v3's switch: cosine-weighted directions (default) or pbrt-v2's uniform ones.
-    bool cosSample = p.getOneBool("cossample", true);
-    return std::make_unique<AmbientOcclusionIntegrator>(nSamples, maxDist, cosSample);
-  }
-  if (desc.name == "ao") {
-    // pbrt-v3's AOIntegrator: 64 directions, unbounded probes, the unnormalised cosine integral.
-    int nSamples = p.getOneInt("nsamples", 64, ValueRange::atLeast(1), desc.loc);
-    bool cosSample = p.getOneBool("cossample", true);
-    return std::make_unique<AmbientOcclusionIntegrator>(
-        nSamples, kInfinity, cosSample, AmbientOcclusionIntegrator::Estimate::UnoccludedCosine);
-  }
-  if (desc.name == "irradiancecache")
-    return std::make_unique<IrradianceCacheIntegrator>(irradianceCacheParams(desc));
-  if (desc.name == "igi") return createIgi(desc);
-  if (desc.name == "dipolesubsurface") return createDipoleSubsurface(desc);
-  // pbrt-v2 registers its photon mapper under both names; nothing differs.
-  if (desc.name == "photonmap" || desc.name == "exphotonmap")
-    return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
-  throwUnknownPlugin(
-      desc.loc, "surface integrator", desc.name,
-      {"ambientocclusion", "ao", "bdpt", "bidirectional", "dipolesubsurface", "directlighting",
-       "exphotonmap", "igi", "irradiancecache", "path", "photonmap", "volpath", "whitted"});
+  const IntegratorPlugin& plugin =
+      requirePlugin(integratorPlugins(), "integrator", desc.name, desc.loc);
+  // "sppm" and "mlt": createImageRenderer makes them, so only a direct call gets here.
+  if (!plugin.makeSurfaceIntegrator)
+    throw SceneError(desc.loc, "integrator '" + desc.name +
+                                   "' renders the whole image; it is not a surface integrator");
+  return plugin.makeSurfaceIntegrator(desc, camera, pixelBounds, dialect);
 }
 
 }  // namespace candela

@@ -1,40 +1,20 @@
-// Material "name" -> Material (lrt draft ch. 10; pbrt-v2's parameter names and defaults).
+// Creates the scene's materials from their statements through the table of
+// materials/material_plugins.h, once each and only when a shape uses them.
 #include "assembly/material_factory.h"
 
 #include <filesystem>
 
-#include "assembly/disney_material_params.h"
-#include "assembly/hair_material_params.h"
 #include "assembly/plugin_factories.h"
-#include "assembly/subsurface_material_params.h"
-#include "core/scene_path.h"
-#include "materials/fourier.h"
-#include "materials/glass.h"
 #include "materials/lafortune_material.h"
+#include "materials/material_plugins.h"
 #include "materials/matte.h"
 #include "materials/measured.h"
-#include "materials/metal.h"
-#include "materials/mirror.h"
-#include "materials/mix.h"
-#include "materials/plastic.h"
-#include "materials/shinymetal.h"
-#include "materials/substrate.h"
-#include "materials/translucent.h"
-#include "materials/uber.h"
 #include "parser/spectrum_input.h"
 #include "textures/solid_textures.h"
 
 namespace candela {
 
 namespace {
-
-const std::vector<std::string> kMaterialNames = {
-    "matte",      "plastic",      "translucent", "glass",  "mirror",   "metal",
-    "shinymetal", "substrate",    "uber",        "mix",    "measured", "clay",
-    "subsurface", "kdsubsurface", "fourier",     "disney", "hair"};
-// Named in the draft (§10.9) without coefficients.
-const std::set<std::string> kUnprintedFits = {"felt", "primer", "skin", "bluepaint",
-                                              "brushedmetal"};
 
 // Height fields of lrt's BumpMap statement (lrt draft Appendix C), scaled by "scale".
 class ScaledFloatTexture : public Texture<Float> {
@@ -47,11 +27,100 @@ class ScaledFloatTexture : public Texture<Float> {
   Float s_;
 };
 
+constexpr ParamSpec kWindyBump[] = {
+    {"scale", "float", "1", "", "", kLrt, "height scale"},
+    {"stretch", "float", "1", "", "positive and finite", kLrt, "feature size"}};
+constexpr ParamSpec kBumpyBump[] = {
+    {"scale", "float", "1", "", "", kLrt, "height scale"},
+    {"octaves", "integer", "6", "", "", kLrt, "noise octaves"},
+    {"omega", "float", "0.5", "", "", kLrt, "amplitude falloff per octave"}};
+
+std::unique_ptr<Texture<Float>> createWindyBump(const ParamSet& p, const FileLoc& loc) {
+  Float stretch = p.getOneFloat("stretch", 1, ValueRange::positive(), loc);
+  return std::make_unique<WindyTexture<Float>>(TextureMapping3D(scale(stretch, stretch, stretch)));
+}
+
+std::unique_ptr<Texture<Float>> createBumpyBump(const ParamSet& p, const FileLoc&) {
+  return std::make_unique<FBmTexture<Float>>(
+      TextureMapping3D(Transform()), p.getOneInt("octaves", 6), p.getOneFloat("omega", 0.5f));
+}
+
+constexpr BumpMapPlugin kBumpMaps[] = {
+    {{"bump map", "windy", kLrt, "wind-rippled height field (lrt draft Appendix C)", kWindyBump},
+     createWindyBump},
+    {{"bump map", "bumpy", kLrt, "fractal Brownian motion height field (lrt draft Appendix C)",
+      kBumpyBump},
+     createBumpyBump},
+};
+
 }  // namespace
+
+std::span<const BumpMapPlugin> bumpMapPlugins() { return kBumpMaps; }
+
+// One material statement as its create function sees it.
+class MaterialFactory::StatementInputs : public MaterialInputs {
+ public:
+  StatementInputs(MaterialFactory& factory, const MaterialDesc& d) : f_(factory), d_(d) {}
+  const ParamSet& params() const override { return d_.params; }
+  const FileLoc& location() const override { return d_.loc; }
+  const Texture<Spectrum>* spectrum(const std::string& name, const Spectrum& def) override {
+    return f_.textures_.spectrum(d_, name, def);
+  }
+  const Texture<Float>* scalar(const std::string& name, Float def) override {
+    return f_.textures_.scalar(d_, name, def);
+  }
+  const Texture<Float>* bumpMap() override {
+    if (!bumpRead_) bump_ = f_.bumpMap(d_);
+    bumpRead_ = true;
+    return bump_;
+  }
+  bool pbrtV3Models() const override { return f_.usesPbrtV3Models(d_); }
+  CoatFresnel plasticCoat() const override { return f_.models_.plasticCoat; }
+  const Material* namedMaterial(const std::string& param) override { return f_.named(d_, param); }
+  void warn(const FileLoc& loc, const std::string& message) override {
+    if (f_.warn_) f_.warn_(loc, message);
+  }
+  std::shared_ptr<const MerlBrdfTable> merlTable(const std::string& path) override {
+    auto& t = f_.merl_[path];
+    if (!t) {
+      ++f_.tablesLoaded_;
+      t = std::make_shared<const MerlBrdfTable>(readMerlBrdf(path));
+    }
+    return t;
+  }
+  std::shared_ptr<const IrregularBrdfTable> irregularTable(const std::string& path) override {
+    auto& t = f_.irregular_[path];
+    if (!t) {
+      ++f_.tablesLoaded_;
+      auto toRGB = [](std::span<const Float> lambda, std::span<const Float> values) {
+        std::vector<SpectrumSample> s;
+        for (size_t i = 0; i < lambda.size() && i < values.size(); ++i)
+          s.push_back({lambda[i], values[i]});
+        return spectrumSamplesToRGB(std::move(s), SpectrumUse::Reflectance);
+      };
+      t = std::make_shared<const IrregularBrdfTable>(readIrregularBrdf(path, toRGB));
+    }
+    return t;
+  }
+  std::shared_ptr<const FourierBsdfTable> fourierTable(const std::string& path) override {
+    auto& t = f_.fourier_[path];
+    if (!t) {
+      ++f_.tablesLoaded_;
+      t = std::make_shared<const FourierBsdfTable>(readFourierBsdf(path));
+    }
+    return t;
+  }
+
+ private:
+  MaterialFactory& f_;
+  const MaterialDesc& d_;
+  const Texture<Float>* bump_ = nullptr;
+  bool bumpRead_ = false;
+};
 
 MaterialFactory::MaterialFactory(const SceneDescription& desc, TextureFactory& textures,
                                  std::vector<std::unique_ptr<Material>>* owned, Used used,
-                                 MaterialModelOptions models, Warn warn)
+                                 CompatibilityProfile models, Warn warn)
     : desc_(desc),
       textures_(textures),
       owned_(owned),
@@ -63,63 +132,6 @@ MaterialFactory::MaterialFactory(const SceneDescription& desc, TextureFactory& t
 bool MaterialFactory::usesPbrtV3Models(const MaterialDesc& d) const {
   if (models_.dialect) return *models_.dialect == SceneDialect::PbrtV3;
   return sceneDialect_ == SceneDialect::PbrtV3 || materialHasPbrtV3Parameters(d);
-}
-
-std::unique_ptr<Material> MaterialFactory::createPbrtV3(const MaterialDesc& d,
-                                                        const Texture<Float>* bump) {
-  const ParamSet& p = d.params;
-  const FileLoc& loc = d.loc;
-  auto spec = [&](const char* name, Float def) {
-    return textures_.spectrum(p, name, Spectrum(def), loc);
-  };
-  auto flt = [&](const char* name, Float def) { return textures_.scalar(p, name, def, loc); };
-  // A texture only when the parameter is given, so that unused defaults are not looked up.
-  auto given = [&](const char* name) { return p.find(name) ? flt(name, 0) : nullptr; };
-  TrowbridgeReitzRoughness r;
-  r.remap = p.getOneBool("remaproughness", true);
-  // pbrt-v3 reads "eta" and, without it, "index".
-  auto index = [&] { return p.find("eta") ? flt("eta", 1.5f) : flt("index", 1.5f); };
-  if (d.name == "metal") {
-    const Texture<Float>*u = given("uroughness"), *v = given("vroughness");
-    const Texture<Float>* rough = !u || !v ? flt("roughness", 0.01f) : nullptr;
-    r.u = u ? u : rough;
-    r.v = v ? v : rough;
-    return std::make_unique<MetalMaterial>(textures_.spectrum(p, "eta", copper::kEta, loc),
-                                           textures_.spectrum(p, "k", copper::kK, loc), r, bump);
-  }
-  if (d.name == "plastic") {
-    r.u = r.v = flt("roughness", 0.1f);
-    return std::make_unique<PlasticMaterial>(spec("Kd", 0.25f), spec("Ks", 0.25f), r, bump,
-                                             models_.plasticCoat);
-  }
-  if (d.name == "substrate") {
-    r.u = flt("uroughness", 0.1f);
-    r.v = flt("vroughness", 0.1f);
-    return std::make_unique<SubstrateMaterial>(spec("Kd", 0.5f), spec("Ks", 0.5f), r, bump);
-  }
-  if (d.name == "uber") {
-    // v falls back to u here, to roughness in metal: pbrt-v3 differs between the two.
-    r.u = given("uroughness");
-    if (!r.u) r.u = flt("roughness", 0.1f);
-    r.v = given("vroughness");
-    if (!r.v) r.v = r.u;
-    UberMaterial::Textures t{spec("Kd", 0.25f),  spec("Ks", 0.25f), spec("Kr", 0),
-                             spec("opacity", 1), nullptr,           index(),
-                             spec("Kt", 0)};
-    return std::make_unique<UberMaterial>(t, r, bump);
-  }
-  if (d.name == "translucent") {
-    r.u = r.v = flt("roughness", 0.1f);
-    return std::make_unique<TranslucentMaterial>(spec("Kd", 0.25f), spec("Ks", 0.25f),
-                                                 spec("reflect", 0.5f), spec("transmit", 0.5f), r,
-                                                 p.getOneFloat("index", 1.5f), bump);
-  }
-  if (d.name == "glass") {
-    r.u = flt("uroughness", 0);
-    r.v = flt("vroughness", 0);
-    return std::make_unique<GlassMaterial>(spec("Kr", 1), spec("Kt", 1), index(), r, bump);
-  }
-  return nullptr;
 }
 
 MaterialFactory::~MaterialFactory() = default;
@@ -165,132 +177,24 @@ const Texture<Float>* MaterialFactory::bumpMap(const MaterialDesc& d) {
   if (!d.bumpMap) return nullptr;
   const PluginDesc& b = *d.bumpMap;
   Float s = b.params.getOneFloat("scale", 1);
-  std::unique_ptr<Texture<Float>> t;
-  if (b.name == "windy") {
-    Float stretch = b.params.getOneFloat("stretch", 1);
-    if (stretch <= 0) throw SceneError(b.loc, "windy: \"stretch\" must be positive");
-    t = std::make_unique<WindyTexture<Float>>(TextureMapping3D(scale(stretch, stretch, stretch)));
-  } else if (b.name == "bumpy") {
-    t = std::make_unique<FBmTexture<Float>>(TextureMapping3D(Transform()),
-                                            b.params.getOneInt("octaves", 6),
-                                            b.params.getOneFloat("omega", 0.5f));
-  } else if (b.name == "imagemap") {
+  if (b.name == "imagemap")
     throw SceneError(b.loc,
                      "BumpMap \"imagemap\" is not supported; define a float imagemap Texture and "
                      "give the material \"texture bumpmap\"");
-  } else {
-    throwUnknownPlugin(b.loc, "bump map", b.name, {"windy", "bumpy"});
-  }
+  const BumpMapPlugin& plugin = requirePlugin(bumpMapPlugins(), "bump map", b.name, b.loc);
+  std::unique_ptr<Texture<Float>> t = plugin.create(b.params, b.loc);
   bumpTextures_.push_back(std::make_unique<ScaledFloatTexture>(std::move(t), s));
   return bumpTextures_.back().get();
 }
 
-std::unique_ptr<Material> MaterialFactory::measured(const MaterialDesc& d,
-                                                    const Texture<Float>* bump) {
-  std::string filename = d.params.getOneString("filename", "");
-  if (filename.empty()) throw SceneError(d.loc, "measured needs \"string filename\"");
-  FileLoc loc = d.params.locationOf("filename", d.loc);
-  std::string path = resolveScenePath(filename, loc.file);
-  try {
-    if (auto it = merl_.find(path); it != merl_.end())
-      return std::make_unique<MeasuredMaterial>(it->second, bump);
-    if (auto it = irregular_.find(path); it != irregular_.end())
-      return std::make_unique<MeasuredMaterial>(it->second, bump);
-    ++tablesLoaded_;
-    if (isMerlBrdfFile(path)) {
-      auto t = std::make_shared<const MerlBrdfTable>(readMerlBrdf(path));
-      merl_[path] = t;
-      return std::make_unique<MeasuredMaterial>(t, bump);
-    }
-    auto toRGB = [](std::span<const Float> lambda, std::span<const Float> values) {
-      std::vector<SpectrumSample> s;
-      for (size_t i = 0; i < lambda.size() && i < values.size(); ++i)
-        s.push_back({lambda[i], values[i]});
-      return spectrumSamplesToRGB(std::move(s), SpectrumUse::Reflectance);
-    };
-    auto t = std::make_shared<const IrregularBrdfTable>(readIrregularBrdf(path, toRGB));
-    irregular_[path] = t;
-    return std::make_unique<MeasuredMaterial>(t, bump);
-  } catch (const FileError& e) {
-    throw SceneError(loc, e.what());
-  }
-}
-
-std::unique_ptr<Material> MaterialFactory::fourier(const MaterialDesc& d,
-                                                   const Texture<Float>* bump) {
-  std::string filename = d.params.getOneString("bsdffile", "");
-  FileLoc loc = d.params.locationOf("bsdffile", d.loc);
-  if (filename.empty()) throw SceneError(loc, "fourier needs \"string bsdffile\"");
-  std::string path = resolveScenePath(filename, loc.file);
-  if (auto it = fourier_.find(path); it != fourier_.end())
-    return std::make_unique<FourierMaterial>(it->second, bump);
-  try {
-    ++tablesLoaded_;
-    auto t = std::make_shared<const FourierBsdfTable>(readFourierBsdf(path));
-    fourier_[path] = t;
-    return std::make_unique<FourierMaterial>(t, bump);
-  } catch (const FileError& e) {
-    throw SceneError(loc, e.what());
-  }
-}
-
 std::unique_ptr<Material> MaterialFactory::create(const MaterialDesc& d) {
-  const ParamSet& p = d.params;
-  const FileLoc& loc = d.loc;
-  auto spec = [&](const char* name, Float def) {
-    return textures_.spectrum(d, name, Spectrum(def));
-  };
-  auto flt = [&](const char* name, Float def) { return textures_.scalar(d, name, def); };
-  if (d.name == "mix") {
-    const Material* m1 = named(d, "namedmaterial1");
-    const Material* m2 = named(d, "namedmaterial2");
-    return std::make_unique<MixMaterial>(m1, m2, spec("amount", 0.5f));
-  }
-  // pbrt-v3's hair, in every dialect (no other has the name); it takes no bump map.
-  if (d.name == "hair") return createHairMaterial(d, textures_);
-  const Texture<Float>* bump = bumpMap(d);
-  // pbrt-v3's only; no other dialect has a material of that name.
-  if (d.name == "disney") return createDisneyMaterial(d, textures_, bump, warn_);
-  if (usesPbrtV3Models(d))
-    if (auto m = createPbrtV3(d, bump)) return m;
-  if (d.name == "matte")
-    return std::make_unique<MatteMaterial>(spec("Kd", 0.5f), flt("sigma", 0), bump);
-  if (d.name == "plastic")
-    return std::make_unique<PlasticMaterial>(spec("Kd", 0.25f), spec("Ks", 0.25f),
-                                             flt("roughness", 0.1f), bump, models_.plasticCoat);
-  if (d.name == "translucent")
-    return std::make_unique<TranslucentMaterial>(
-        spec("Kd", 0.25f), spec("Ks", 0.25f), spec("reflect", 0.5f), spec("transmit", 0.5f),
-        flt("roughness", 0.1f), p.getOneFloat("index", 1.5f), bump);
-  if (d.name == "glass")
-    return std::make_unique<GlassMaterial>(spec("Kr", 1), spec("Kt", 1), flt("index", 1.5f), bump);
-  if (d.name == "mirror") return std::make_unique<MirrorMaterial>(spec("Kr", 0.9f), bump);
-  if (d.name == "metal")
-    return std::make_unique<MetalMaterial>(textures_.spectrum(d, "eta", copper::kEta),
-                                           textures_.spectrum(d, "k", copper::kK),
-                                           flt("roughness", 0.01f), bump);
-  if (d.name == "shinymetal")
-    return std::make_unique<ShinyMetalMaterial>(spec("Ks", 1), spec("Kr", 1),
-                                                flt("roughness", 0.1f), bump);
-  if (d.name == "substrate")
-    return std::make_unique<SubstrateMaterial>(
-        spec("Kd", 0.5f), spec("Ks", 0.5f), flt("uroughness", 0.1f), flt("vroughness", 0.1f), bump);
-  if (d.name == "uber")
-    return std::make_unique<UberMaterial>(
-        UberMaterial::Textures{spec("Kd", 0.25f), spec("Ks", 0.25f), spec("Kr", 0),
-                               spec("opacity", 1), flt("roughness", 0.1f), flt("index", 1.5f)},
-        bump);
-  if (d.name == "measured") return measured(d, bump);
-  if (d.name == "fourier") return fourier(d, bump);
-  // The dipole's translucent materials (pbrt 2e §16.5): subsurface_material_params.h.
-  if (d.name == "subsurface" || d.name == "kdsubsurface")
-    return createSubsurfaceMaterial(d, textures_, bump);
-  if (auto fit = lafortuneFit(d.name)) return std::make_unique<LafortuneMaterial>(*fit, bump);
-  if (kUnprintedFits.count(d.name))
-    throw SceneError(loc, "material '" + d.name +
-                              "' is one of lrt's measured Lafortune fits whose coefficients the "
-                              "book does not print; only \"clay\" is available");
-  throwUnknownPlugin(loc, "material", d.name, kMaterialNames);
+  if (isUnprintedLafortuneFit(d.name))
+    throw SceneError(d.loc, "material '" + d.name +
+                                "' is one of lrt's measured Lafortune fits whose coefficients the "
+                                "book does not print; only \"clay\" is available");
+  const MaterialPlugin& plugin = requirePlugin(materialPlugins(), "material", d.name, d.loc);
+  StatementInputs inputs(*this, d);
+  return plugin.create(inputs);
 }
 
 std::unique_ptr<Material> createDefaultMaterial(TextureFactory& textures) {

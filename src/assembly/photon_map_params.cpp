@@ -40,17 +40,15 @@ PhotonMapSettings photonMapSettings(const PluginDesc& desc) {
     throw SceneError(p.locationOf("maxdepth", desc.loc),
                      "give one of \"maxspeculardepth\" and its lrt name \"maxdepth\", not both");
   std::string depthName = lrtName ? "maxdepth" : "maxspeculardepth";
-  s.maxSpecularDepth = countParam(desc, depthName, s.maxSpecularDepth, 0);
   // The specular part recurses once per level on a worker's stack (see whitted's limit).
-  constexpr int kMaxRecursion = 1000;
-  if (s.maxSpecularDepth > kMaxRecursion)
-    throw SceneError(p.locationOf(depthName, desc.loc),
-                     depthName + " must be at most " + std::to_string(kMaxRecursion));
+  s.maxSpecularDepth =
+      p.getOneInt(depthName, s.maxSpecularDepth, ValueRange::within(0, 1000), desc.loc);
 
-  s.maxDist = p.getOneFloat("maxdist", s.maxDist);
-  if (!(s.maxDist > 0) || !std::isfinite(s.maxDist * s.maxDist))
+  s.maxDist = p.getOneFloat("maxdist", s.maxDist, ValueRange::positive(), desc.loc);
+  // The photon lookups compare squared distances.
+  if (!std::isfinite(s.maxDist * s.maxDist))
     throw SceneError(p.locationOf("maxdist", desc.loc),
-                     "maxdist must be > 0 and finite; got " + std::to_string(s.maxDist));
+                     "\"maxdist\" must have a finite square (got " + formatNumber(s.maxDist) + ")");
   s.gatherAngle =  // degrees
       p.getOneFloat("gatherangle", s.gatherAngle, ValueRange::between(0, 180), desc.loc);
   s.finalGather = flagParam(p, "finalgather", s.finalGather, desc.loc);

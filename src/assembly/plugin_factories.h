@@ -1,5 +1,5 @@
-// Name -> object for materials, lights and integrators. Unknown names are errors that list the
-// names that exist.
+// Name -> object for materials, lights and integrators, through their kinds' tables
+// (assembly/plugin_registry.h lists them); unknown names are errors that list the table.
 #pragma once
 
 #include <memory>
@@ -17,10 +17,6 @@
 #include "samplers/sampler.h"
 
 namespace candela {
-
-[[noreturn]] void throwUnknownPlugin(const FileLoc& loc, const std::string& kind,
-                                     const std::string& name,
-                                     const std::vector<std::string>& known);
 
 // The material of shapes that name none (pbrt: matte with Kd 0.5).
 std::unique_ptr<Material> createDefaultMaterial(TextureFactory& textures);

@@ -75,7 +75,7 @@ PluginDesc orDefault(const PluginDesc& d, const std::string& name) {
 class MaterialCache {
  public:
   MaterialCache(const SceneDescription& desc, RenderJob& job, const WarningSink& warn,
-                const MaterialModelOptions& models) {
+                const CompatibilityProfile& models) {
     auto used = [warn](const PluginDesc& d) { reportUnused(d, warn); };
     job.materialFactory =
         std::make_unique<MaterialFactory>(desc, *job.textures, &job.materials, used, models, warn);
@@ -138,8 +138,7 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* n
   const MediumInterface* mediumInterface = job.namedMedia->interfaceOf(sd);
   const WarningSink& warn = options.warn;
   bool allowAreaLight = noAreaLight == nullptr;
-  CreatedShapes created =
-      createShapes(sd, objectToWorld, *job.textures, options.subdiv, options.hyperboloidNormal);
+  CreatedShapes created = createShapes(sd, objectToWorld, *job.textures, options.compatibility);
   reportUnused(sd, warn);
   warnAboutDegenerateTriangles(sd, created, warn);
   // pbrt 3e cannot sample points on curves either (its Curve::Sample is unimplemented).
@@ -264,12 +263,12 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
         std::make_unique<SceneDescription>(convertColors(sceneDesc, *options.colorMatrix));
   const SceneDescription& desc = job.convertedDescription ? *job.convertedDescription : sceneDesc;
   const WarningSink& warn = options.warn;
-  const SceneDialect dialect = options.materialModels.dialect.value_or(detectSceneDialect(desc));
+  const SceneDialect dialect = options.compatibility.dialect.value_or(detectSceneDialect(desc));
   job.textures = std::make_unique<TextureFactory>(desc.textures, options.loadImage, warn,
                                                   dialect == SceneDialect::PbrtV3
                                                       ? TextureFactory::ImageOrigin::BottomLeft
                                                       : TextureFactory::ImageOrigin::TopLeft,
-                                                  options.clampedOctaves);
+                                                  options.compatibility.clampedOctaves);
 
   // pbrt-v2 Volume regions (lrt draft ch. 12): one medium filling the scene and the volume
   // integrator that renders it (pbrt-v2's default: "emission"); neither exists without regions.
@@ -392,7 +391,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   reportUnused(integratorDesc, warn);
 
   // Geometry, materials and lights: only what the shapes use.
-  MaterialCache materials(desc, job, warn, options.materialModels);
+  MaterialCache materials(desc, job, warn, options.compatibility);
   job.namedMedia = std::make_unique<NamedMedia>(desc);
   addGeometry(desc, materials, job, options);
   SceneMedia sceneMedia;

@@ -16,6 +16,7 @@
 #include "assembly/material_factory.h"
 #include "assembly/texture_factory.h"
 #include "cameras/camera.h"
+#include "core/compatibility.h"
 #include "film/film.h"
 #include "integrators/integrator.h"
 #include "integrators/volume_integrator.h"
@@ -25,8 +26,6 @@
 #include "renderers/image_renderer.h"
 #include "samplers/sampler.h"
 #include "scene/scene.h"
-#include "shapes/hyperboloid_normal.h"
-#include "shapes/loop_producer.h"
 #include "shapes/shape.h"
 #include "textures/noise.h"
 
@@ -48,16 +47,12 @@ struct BuildOptions {
   int tileIndex = 0, tileCount = 0;
   bool quick = false;       // quarter resolution, an eighth of the samples
   std::string accelerator;  // overrides the Accelerator statement ("" = the scene's)
-  LoopProducer subdiv = LoopProducer::Book;  // the code that refines "loopsubdiv" shapes
-  HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact;  // --hyperboloid-normal
-  ClampedOctaves clampedOctaves = ClampedOctaves::Mean;            // --turbulence
+  // The dialect (--dialect; default: detected) and every pbrt-compatibility switch.
+  CompatibilityProfile compatibility;
   unsigned aovs = 0;  // AovFlag bits, added to the Film's "aovs"
   // scene_linear RGB -> working-space RGB for every colour parameter (--colorspace); none =
   // identity.
   std::optional<std::array<Float, 9>> colorMatrix;
-  // The materials' dialect (--dialect; default: detected) and plastic's coat Fresnel
-  // (--coat-fresnel).
-  MaterialModelOptions materialModels;
   WarningSink warn;           // may be empty
   int nThreads = 0;           // for the integrator's preprocess (0: all cores)
   bool showProgress = false;  // the preprocess's progress on standard error

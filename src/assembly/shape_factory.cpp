@@ -2,18 +2,9 @@
 
 #include <filesystem>
 
-#include "assembly/plugin_factories.h"
 #include "assembly/texture_factory.h"
-#include "shapes/cone.h"
-#include "shapes/curve_shape.h"
-#include "shapes/cylinder.h"
-#include "shapes/disk.h"
-#include "shapes/heightfield.h"
-#include "shapes/hyperboloid.h"
-#include "shapes/loop_subdiv_shape.h"
-#include "shapes/nurbs.h"
-#include "shapes/paraboloid.h"
-#include "shapes/sphere.h"
+#include "core/plugin_spec.h"
+#include "shapes/shape_plugins.h"
 #include "shapes/triangle_mesh.h"
 
 namespace candela {
@@ -55,56 +46,47 @@ void readAlpha(const ShapeDesc& desc, TextureFactory& textures, TriangleMesh* me
     mesh->shadowAlpha = shadow ? shadow : mesh->alpha;
 }
 
+// The shapes whose table entry declares "alpha" (the triangle meshes) take cut-outs.
+bool declaresAlpha(const PluginSpec& spec) {
+  for (const ParamSpec& p : spec.params)
+    if (p.name == "alpha") return true;
+  return false;
+}
+
+const ShapePlugin& requireShape(const ShapeDesc& desc) {
+  return requirePlugin(shapePlugins(), "shape", desc.name, desc.loc);
+}
+
+CreatedShapes create(const ShapePlugin& plugin, const ShapeDesc& desc,
+                     const Transform& objectToWorld, LoopProducer subdiv,
+                     HyperboloidNormal hyperboloidNormal) {
+  std::string dir = std::filesystem::path(desc.loc.file).parent_path().string();
+  ShapeInputs in{.objectToWorld = objectToWorld,
+                 .reverseOrientation = desc.reverseOrientation,
+                 .params = desc.params,
+                 .loc = desc.loc,
+                 .directory = dir,
+                 .subdiv = subdiv,
+                 .hyperboloidNormal = hyperboloidNormal};
+  CreatedShapes out;
+  out.shapes = plugin.create(in, &out.mesh);
+  return out;
+}
+
 }  // namespace
 
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           TextureFactory& textures, LoopProducer subdiv,
-                           HyperboloidNormal hyperboloidNormal) {
-  CreatedShapes out = createShapes(desc, objectToWorld, subdiv, hyperboloidNormal);
-  if (out.mesh && (desc.name == "trianglemesh" || desc.name == "plymesh"))
-    readAlpha(desc, textures, out.mesh.get());
+                           TextureFactory& textures, const CompatibilityProfile& profile) {
+  const ShapePlugin& plugin = requireShape(desc);
+  CreatedShapes out =
+      create(plugin, desc, objectToWorld, profile.subdiv, profile.hyperboloidNormal);
+  if (out.mesh && declaresAlpha(plugin.spec)) readAlpha(desc, textures, out.mesh.get());
   return out;
 }
 
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           LoopProducer subdiv, HyperboloidNormal hyperboloidNormal) {
-  CreatedShapes out;
-  using QuadricFactory = std::unique_ptr<Shape> (*)(const Transform&, bool, const ParamSet&);
-  QuadricFactory quadric = nullptr;
-  if (desc.name == "sphere") quadric = createSphereShape;
-  if (desc.name == "cylinder") quadric = createCylinderShape;
-  if (desc.name == "disk") quadric = createDiskShape;
-  if (desc.name == "cone") quadric = createConeShape;
-  if (desc.name == "paraboloid") quadric = createParaboloidShape;
-  if (desc.name == "hyperboloid") {
-    out.shapes.push_back(createHyperboloidShape(objectToWorld, desc.reverseOrientation, desc.params,
-                                                hyperboloidNormal));
-  } else if (quadric) {
-    out.shapes.push_back(quadric(objectToWorld, desc.reverseOrientation, desc.params));
-  } else if (desc.name == "heightfield") {
-    out.shapes = createHeightfieldShapes(objectToWorld, desc.reverseOrientation, desc.params,
-                                         &out.mesh, desc.loc);
-  } else if (desc.name == "trianglemesh") {
-    out.shapes = createTriangleMeshShapes(objectToWorld, desc.reverseOrientation, desc.params,
-                                          &out.mesh, desc.loc);
-  } else if (desc.name == "loopsubdiv") {
-    out.shapes = createLoopSubdivShapes(objectToWorld, desc.reverseOrientation, desc.params,
-                                        &out.mesh, desc.loc, subdiv);
-  } else if (desc.name == "nurbs") {
-    out.shapes =
-        createNurbsShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh, desc.loc);
-  } else if (desc.name == "curve") {
-    out.shapes = createCurveShapes(objectToWorld, desc.reverseOrientation, desc.params, desc.loc);
-  } else if (desc.name == "plymesh") {
-    std::string dir = std::filesystem::path(desc.loc.file).parent_path().string();
-    out.shapes = createPlyMeshShapes(objectToWorld, desc.reverseOrientation, desc.params, &out.mesh,
-                                     desc.loc, dir);
-  } else {
-    throwUnknownPlugin(desc.loc, "shape", desc.name,
-                       {"sphere", "cylinder", "disk", "cone", "paraboloid", "hyperboloid",
-                        "heightfield", "trianglemesh", "plymesh", "loopsubdiv", "nurbs", "curve"});
-  }
-  return out;
+                           const CompatibilityProfile& profile) {
+  return create(requireShape(desc), desc, objectToWorld, profile.subdiv, profile.hyperboloidNormal);
 }
 
 }  // namespace candela

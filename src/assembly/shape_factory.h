@@ -1,12 +1,12 @@
-// Name -> shapes. A mesh statement yields one TriangleShape per triangle plus the mesh they share.
+// Name -> shapes, through the shapes' table (shapes/shape_plugins.h), whose names the unknown-shape
+// error lists. A mesh statement yields one TriangleShape per triangle plus the mesh they share.
 #pragma once
 
 #include <memory>
 #include <vector>
 
+#include "core/compatibility.h"
 #include "parser/scene_description.h"
-#include "shapes/hyperboloid_normal.h"
-#include "shapes/loop_producer.h"
 #include "shapes/shape.h"
 
 namespace candela {
@@ -24,14 +24,12 @@ struct CreatedShapes {
 class TextureFactory;
 
 // Triangle meshes' "alpha" and "shadowalpha" (pbrt-v3 cut-outs, float textures or constants) come
-// from textures. subdiv picks the code that refines "loopsubdiv" (the same surface either way);
-// hyperboloidNormal the hyperboloid's normal (exact, or pbrt's).
+// from textures. The profile picks the code that refines "loopsubdiv" (the same surface either
+// way) and the hyperboloid's normal (exact, or pbrt's).
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           TextureFactory& textures, LoopProducer subdiv = LoopProducer::Book,
-                           HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact);
+                           TextureFactory& textures, const CompatibilityProfile& profile = {});
 // Without textures: "alpha" and "shadowalpha" are not read (and so reported unused).
 CreatedShapes createShapes(const ShapeDesc& desc, const Transform& objectToWorld,
-                           LoopProducer subdiv = LoopProducer::Book,
-                           HyperboloidNormal hyperboloidNormal = HyperboloidNormal::Exact);
+                           const CompatibilityProfile& profile = {});
 
 }  // namespace candela

@@ -15,12 +15,12 @@ std::unique_ptr<ImageRenderer> createSppmRenderer(const PluginDesc& desc,
   SppmSettings s;
   s.iterations = p.getOneInt("numiterations", 64, ValueRange::atLeast(1), desc.loc);
   s.maxDepth = p.getOneInt("maxdepth", 5, ValueRange::atLeast(0), desc.loc);
-  s.photonsPerIteration = p.getOneInt("photonsperiteration", -1);
-  if (s.photonsPerIteration == 0 || s.photonsPerIteration < -1)
+  // -1 or at least 1: no one range, so 0 is refused on its own.
+  s.photonsPerIteration = p.getOneInt("photonsperiteration", -1, ValueRange::atLeast(-1), desc.loc);
+  if (s.photonsPerIteration == 0)
     throw SceneError(p.locationOf("photonsperiteration", desc.loc),
                      "\"photonsperiteration\" must be at least 1, or -1 for the image's pixel "
-                     "count (got " +
-                         std::to_string(s.photonsPerIteration) + ")");
+                     "count (got 0)");
   s.initialRadius = p.getOneFloat("radius", 1, ValueRange::positive(), desc.loc);
   (void)p.getOneInt("imagewritefrequency", std::numeric_limits<int>::max());
   if (context.sppOverride > 0)

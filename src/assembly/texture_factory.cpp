@@ -3,20 +3,13 @@
 #include <filesystem>
 #include <type_traits>
 
-#include "core/scene_path.h"
+#include "assembly/texture_plugins.h"
 #include "textures/basic_textures.h"
-#include "textures/checkerboard.h"
-#include "textures/dots.h"
 #include "textures/image_texture.h"
-#include "textures/solid_textures.h"
-#include "textures/texture_params.h"
 
 namespace candela {
 
 namespace {
-
-constexpr const char* kKnownClasses =
-    "bilerp, checkerboard, constant, dots, fbm, imagemap, marble, mix, scale, uv, windy, wrinkled";
 
 template <typename T>
 const char* typeName() {
@@ -31,9 +24,10 @@ T getOne(const ParamSet& params, const std::string& name, const T& def) {
     return params.getOneSpectrum(name, def);
 }
 
-[[noreturn]] void spectrumOnly(const TextureDesc& d) {
-  throw SceneError(d.loc, "texture class '" + d.name + "' makes spectrum textures only, but '" +
-                              d.textureName + "' is declared \"float\"");
+// A class the table has for the other type only.
+[[noreturn]] void otherTypeOnly(const TextureDesc& d, const char* made, const char* declared) {
+  throw SceneError(d.loc, "texture class '" + d.name + "' makes " + made + " textures only, but '" +
+                              d.textureName + "' is declared \"" + declared + "\"");
 }
 
 }  // namespace
@@ -141,135 +135,59 @@ const Texture<T>* TextureFactory::named(size_t index) {
 
 template <typename T>
 std::unique_ptr<Texture<T>> TextureFactory::create(const TextureDesc& d, size_t index) {
-  const ParamSet& p = d.params;
-  const TextureBindings* bindings = d.textures ? &*d.textures : nullptr;
-  auto tex = [&](const std::string& name, const T& def) {
-    return parameter<T>(p, name, def, d.loc, index, bindings);
-  };
-  auto mapping2D = [&] { return createMapping2D(p, d.textureToWorld, d.loc); };
-  // pbrt-v2 and v3 hand the CTM itself to the 3D mapping as its world-to-texture transform, so a
-  // Scale 3 before the Texture statement makes the pattern three times finer; scenes are written
-  // for that.
-  auto mapping3D = [&] { return TextureMapping3D(d.textureToWorld); };
-  const std::string& c = d.name;
-
-  if (c == "constant") return std::make_unique<ConstantTexture<T>>(getOne<T>(p, "value", T(1)));
-  if (c == "scale") return std::make_unique<ScaleTexture<T>>(tex("tex1", T(1)), tex("tex2", T(1)));
-  if (c == "mix") {
-    const Texture<T>* t1 = tex("tex1", T(0));
-    const Texture<T>* t2 = tex("tex2", T(1));
-    return std::make_unique<MixTexture<T>>(
-        t1, t2, parameter<Float>(p, "amount", 0.5f, d.loc, index, bindings));
+  const TexturePlugin& plugin = requirePlugin(texturePlugins(), "texture", d.name, d.loc);
+  Context context(*this, d, index);
+  if constexpr (std::is_same_v<T, Float>) {
+    if (!plugin.createFloat) otherTypeOnly(d, "spectrum", "float");
+    return plugin.createFloat(context);
+  } else {
+    if (!plugin.createSpectrum) otherTypeOnly(d, "float", "spectrum");
+    return plugin.createSpectrum(context);
   }
-  if (c == "bilerp")
-    return std::make_unique<BilerpTexture<T>>(mapping2D(), getOne<T>(p, "v00", T(0)),
-                                              getOne<T>(p, "v01", T(1)), getOne<T>(p, "v10", T(0)),
-                                              getOne<T>(p, "v11", T(1)));
-  if (c == "uv") {
-    if constexpr (std::is_same_v<T, Spectrum>)
-      return std::make_unique<UVTexture>(mapping2D());
-    else
-      spectrumOnly(d);
-  }
-  if (c == "checkerboard") {
-    int dimension = p.getOneInt("dimension", 2);
-    if (dimension != 2 && dimension != 3)
-      throw SceneError(p.locationOf("dimension", d.loc),
-                       "checkerboard dimension must be 2 or 3, not " + std::to_string(dimension));
-    std::string aa = p.getOneString("aamode", dimension == 2 ? "closedform" : "supersample");
-    if (aa != "closedform" && aa != "supersample" && aa != "none")
-      throw SceneError(
-          p.locationOf("aamode", d.loc),
-          "unknown checkerboard aamode '" + aa + "' (known: closedform, supersample, none)");
-    const Texture<T>* t1 = tex("tex1", T(1));
-    const Texture<T>* t2 = tex("tex2", T(0));
-    if (dimension == 3)
-      return std::make_unique<Checkerboard3DTexture<T>>(mapping3D(), t1, t2, aa != "none");
-    CheckerboardAA mode = aa == "none"          ? CheckerboardAA::None
-                          : aa == "supersample" ? CheckerboardAA::Supersample
-                                                : CheckerboardAA::ClosedForm;
-    return std::make_unique<Checkerboard2DTexture<T>>(mapping2D(), t1, t2, mode);
-  }
-  if (c == "dots") {
-    // pbrt-v2 and v3 hand "inside" to the dots texture's outside slot and "outside" to its inside
-    // (their constructor takes the two in the opposite order to their factory), so in every
-    // pbrt scene the "inside" value fills the space between the dots. Files mean what pbrt shows.
-    const Texture<T>* between = tex("inside", T(1));
-    const Texture<T>* dots = tex("outside", T(0));
-    return std::make_unique<DotsTexture<T>>(mapping2D(), between, dots);
-  }
-  if (c == "fbm")
-    return std::make_unique<FBmTexture<T>>(mapping3D(), p.getOneInt("octaves", 8),
-                                           p.getOneFloat("roughness", .5f));
-  if (c == "wrinkled")
-    return std::make_unique<WrinkledTexture<T>>(mapping3D(), p.getOneInt("octaves", 8),
-                                                p.getOneFloat("roughness", .5f), clampedOctaves_);
-  if (c == "windy") return std::make_unique<WindyTexture<T>>(mapping3D());
-  if (c == "marble") {
-    if constexpr (std::is_same_v<T, Spectrum>)
-      return std::make_unique<MarbleTexture>(
-          mapping3D(), p.getOneInt("octaves", 8), p.getOneFloat("roughness", .5f),
-          p.getOneFloat("scale", 1), p.getOneFloat("variation", .2f));
-    else
-      spectrumOnly(d);
-  }
-  if (c == "imagemap") return createImageTexture<T>(d);
-  throw SceneError(d.loc, "unknown texture class '" + c + "' (known: " + kKnownClasses + ")");
 }
 
 template <typename T>
-std::unique_ptr<Texture<T>> TextureFactory::createImageTexture(const TextureDesc& d) {
-  const ParamSet& p = d.params;
-  // Every parameter is read before the file, so parameter errors come first.
-  std::string filename = p.getOneString("filename", "");
-  if (filename.empty())
-    throw SceneError(d.loc, "imagemap texture '" + d.textureName + "' needs a \"string filename\"");
-  std::string path = resolveScenePath(filename, p.locationOf("filename", d.loc).file);
-  std::string colorSpace = p.getOneString("colorspace", "");
-  std::string wrapName = p.getOneString("wrap", "repeat");
-  std::optional<WrapMode> wrap = parseWrapMode(wrapName);
-  if (!wrap)
-    throw SceneError(p.locationOf("wrap", d.loc),
-                     "unknown wrap mode '" + wrapName + "' (known: repeat, black, clamp)");
-  Float maxAnisotropy = p.getOneFloat("maxanisotropy", 8);
-  bool trilinear = p.getOneBool("trilinear", false);
-  Float scale = p.getOneFloat("scale", 1), gamma = 1;
-  // "gamma" is pbrt-v3's bool (true: the numbers are sRGB-encoded, false: linear, whatever the
-  // pixel type; absent, pbrt-v3 decodes PNG and TGA only, which the default rule does) or
-  // pbrt-v2's float exponent applied after the scale. A "string colorspace" overrides the bool.
-  if (const ParamItem* g = p.find("gamma")) {
-    if (g->type == ParamType::Bool) {
-      bool encoded = p.getOneBool("gamma", false);
-      if (colorSpace.empty()) colorSpace = encoded ? kSrgbEncoded : kStoredLinear;
-    } else {
-      gamma = p.getOneFloat("gamma", 1);
-    }
-  }
-  std::unique_ptr<TextureMapping2D> mapping = createMapping2D(p, d.textureToWorld, d.loc);
-
-  MipKey key{path, colorSpace, *wrap, scale, gamma};
-  auto& cache = store<T>().mipmaps;
-  std::shared_ptr<const MIPMap<T>> mipmap;
-  if (auto it = cache.find(key); it != cache.end()) {
-    mipmap = it->second;
-  } else {
-    const ImageBuffer& img = image(path, colorSpace, d);
-    std::vector<T> texels;
-    if constexpr (std::is_same_v<T, Float>)
-      texels = floatTexels(img, scale, gamma);
-    else
-      texels = spectrumTexels(img, scale, gamma);
-    if (imageOrigin_ == ImageOrigin::BottomLeft) texels = bottomRowFirst(texels, img.width);
-    try {
-      mipmap = std::make_shared<const MIPMap<T>>(img.width, img.height, std::move(texels), *wrap);
-    } catch (const std::invalid_argument& e) {
-      throw SceneError(d.loc, "image texture '" + d.textureName + "' (" + path + "): " + e.what());
-    }
-    cache[key] = mipmap;
-    ++mipmapsBuilt_;
-  }
-  return std::make_unique<ImageTexture<T>>(std::move(mapping), mipmap, trilinear, maxAnisotropy);
+const Texture<T>* TextureFactory::Context::texture(const std::string& name, const T& def) {
+  const TextureBindings* bindings = desc_.textures ? &*desc_.textures : nullptr;
+  return factory_.parameter<T>(desc_.params, name, def, desc_.loc, index_, bindings);
 }
+
+template <typename T>
+std::shared_ptr<const MIPMap<T>> TextureFactory::Context::mipmap(const std::string& path,
+                                                                 const std::string& colorSpace,
+                                                                 WrapMode wrap, Float scale,
+                                                                 Float gamma) {
+  MipKey key{path, colorSpace, wrap, scale, gamma};
+  auto& cache = factory_.store<T>().mipmaps;
+  if (auto it = cache.find(key); it != cache.end()) return it->second;
+  const ImageBuffer& img = factory_.image(path, colorSpace, desc_);
+  std::vector<T> texels;
+  if constexpr (std::is_same_v<T, Float>)
+    texels = floatTexels(img, scale, gamma);
+  else
+    texels = spectrumTexels(img, scale, gamma);
+  if (factory_.imageOrigin_ == ImageOrigin::BottomLeft) texels = bottomRowFirst(texels, img.width);
+  std::shared_ptr<const MIPMap<T>> mipmap;
+  try {
+    mipmap = std::make_shared<const MIPMap<T>>(img.width, img.height, std::move(texels), wrap);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(desc_.loc,
+                     "image texture '" + desc_.textureName + "' (" + path + "): " + e.what());
+  }
+  cache[key] = mipmap;
+  ++factory_.mipmapsBuilt_;
+  return mipmap;
+}
+
+// The texture classes' create functions (texture_plugins.cpp) are compiled elsewhere.
+template const Texture<Float>* TextureFactory::Context::texture<Float>(const std::string&,
+                                                                       const Float&);
+template const Texture<Spectrum>* TextureFactory::Context::texture<Spectrum>(const std::string&,
+                                                                             const Spectrum&);
+template std::shared_ptr<const MIPMap<Float>> TextureFactory::Context::mipmap<Float>(
+    const std::string&, const std::string&, WrapMode, Float, Float);
+template std::shared_ptr<const MIPMap<Spectrum>> TextureFactory::Context::mipmap<Spectrum>(
+    const std::string&, const std::string&, WrapMode, Float, Float);
 
 const ImageBuffer& TextureFactory::image(const std::string& path, const std::string& colorSpace,
                                          const TextureDesc& d) {

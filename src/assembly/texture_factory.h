@@ -1,8 +1,8 @@
 // Creates the textures that materials name, once each and only when used (DESIGN.md, data flow
 // step 2), and turns a material parameter into a texture: a "texture" reference or a constant.
 //
-// Texture classes (pbrt-v2's names, parameters and defaults; src/textures/ documents each):
-// constant, scale, mix, bilerp, uv, checkerboard, dots, fbm, wrinkled, windy, marble, imagemap.
+// Texture classes: the textures' table (assembly/texture_plugins.cpp: pbrt-v2's names, parameters
+// and defaults; src/textures/ documents each class), through which create() dispatches.
 // A name in a texture's, material's or shape's parameters means the definition bound to it at
 // that statement (PluginDesc::textures, from SceneBuilder: pbrt's graphics-state scoping), so a
 // texture only ever names earlier textures and references cannot form a cycle. Descriptions
@@ -83,6 +83,33 @@ class TextureFactory {
     return store<T>().owned.back().get();
   }
 
+  // What a texture class's create function (assembly/texture_plugins.cpp) builds from: the
+  // Texture statement, the textures it may name, and the factory's settings and image cache.
+  class Context {
+   public:
+    Context(TextureFactory& factory, const TextureDesc& desc, size_t index)
+        : factory_(factory), desc_(desc), index_(index) {}
+    const TextureDesc& desc() const { return desc_; }
+    const ParamSet& params() const { return desc_.params; }
+    // The parameter as a texture of type T (as TextureFactory::spectrum and scalar): a named
+    // texture in effect at the statement (without bindings: defined before this texture), or a
+    // constant of the given value (def when absent).
+    template <typename T>
+    const Texture<T>* texture(const std::string& name, const T& def);
+    ClampedOctaves clampedOctaves() const { return factory_.clampedOctaves_; }
+    // The MIP map of the image at path, read and built once per (path, colour space, wrap,
+    // scale, gamma) and type; the image's rows in the order the scene's dialect wants. Errors
+    // name this texture and the path.
+    template <typename T>
+    std::shared_ptr<const MIPMap<T>> mipmap(const std::string& path, const std::string& colorSpace,
+                                            WrapMode wrap, Float scale, Float gamma);
+
+   private:
+    TextureFactory& factory_;
+    const TextureDesc& desc_;
+    size_t index_;  // of desc_ in the factory's descriptions
+  };
+
   int texturesCreated() const { return created_; }  // named textures (not inline constants)
   int imagesLoaded() const { return imagesLoaded_; }
   int mipmapsBuilt() const { return mipmapsBuilt_; }
@@ -111,8 +138,6 @@ class TextureFactory {
   const Texture<T>* named(size_t index);
   template <typename T>
   std::unique_ptr<Texture<T>> create(const TextureDesc& d, size_t index);
-  template <typename T>
-  std::unique_ptr<Texture<T>> createImageTexture(const TextureDesc& d);
   std::optional<size_t> find(const std::string& textureName, const std::string& type,
                              size_t visible, const TextureBindings* bindings) const;
   const ImageBuffer& image(const std::string& path, const std::string& colorSpace,

@@ -11,14 +11,15 @@
 
 namespace candela {
 
-// One region: "homogeneous", "exponential" or "volumegrid", in its volumeToWorld space.
+// One region, in its volumeToWorld space: the entry of volumeRegionPlugins()
+// (assembly/volume_plugins.h) that desc.name names.
 std::unique_ptr<Medium> createVolumeRegion(const VolumeDesc& desc);
 
 // The medium filling the scene: null without regions, the region itself for one, their
 // aggregate for several.
 std::unique_ptr<Medium> createSceneVolume(const std::vector<VolumeDesc>& volumes);
 
-// "emission" or "single".
+// The entry of volumeIntegratorPlugins() that desc.name names.
 std::unique_ptr<VolumeIntegrator> createVolumeIntegrator(const PluginDesc& desc);
 
 }  // namespace candela

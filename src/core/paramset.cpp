@@ -86,7 +86,16 @@ void ParamSet::add(ParamItem item) {
   items_.push_back(std::move(item));
 }
 
+void ParamSet::recordQueries(std::shared_ptr<std::set<std::string>> names) {
+  queried_ = std::move(names);
+}
+
+void ParamSet::noteQuery(const std::string& name) const {
+  if (queried_) queried_->insert(name);
+}
+
 const ParamItem* ParamSet::find(const std::string& name) const {
+  noteQuery(name);
   for (const ParamItem& item : items_)
     if (item.name == name) {
       item.lookedUp = true;
@@ -129,6 +138,7 @@ std::string ParamSet::getOneString(const std::string& name, const std::string& d
 }
 
 FileLoc ParamSet::locationOf(const std::string& name, const FileLoc& fallback) const {
+  noteQuery(name);
   for (const ParamItem& item : items_)
     if (item.name == name) return item.loc;
   return fallback;
@@ -196,6 +206,7 @@ Spectrum ParamSet::getOneSpectrum(const std::string& name, const Spectrum& def) 
 std::string ParamSet::getTexture(const std::string& name) const {
   // A material asks for a texture first and for a constant value when there is none (pbrt's
   // GetSpectrumTexture), so another type here is no error and does not count as a use.
+  noteQuery(name);
   for (const ParamItem& item : items_)
     if (item.name == name && item.type == ParamType::Texture) {
       item.lookedUp = true;

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -100,12 +102,20 @@ class ParamSet {
   // Calls warn(item) for each item no getter has asked for.
   void forEachUnused(const std::function<void(const ParamItem&)>& warn) const;
 
+  // From now on every name a getter, find, getTexture or locationOf asks for, present or not, is
+  // added to *names (shared by copies of this set); null stops it. For the test that checks each
+  // plug-in's declared parameters against what it reads (tests/unit/test_plugin_tables.cpp).
+  void recordQueries(std::shared_ptr<std::set<std::string>> names);
+
  private:
   const ParamItem* findTyped(const std::string& name, ParamType type) const;
   const ParamItem* findSingle(const std::string& name, ParamType type) const;
   const std::vector<Float>* tuples(const std::string& name, ParamType type) const;
 
+  void noteQuery(const std::string& name) const;
+
   std::vector<ParamItem> items_;
+  std::shared_ptr<std::set<std::string>> queried_;
 };
 
 }  // namespace candela

@@ -1,33 +1,18 @@
-// Film "image" -> Film, with pbrt-v2's parameter names and defaults (lrt draft App. C). The
-// display-pipeline parameters of the draft's ImageFilm (gamma, tone mapping, bloom, ...) belong
-// to output and are not read here.
-#include <algorithm>
+// Film "name" -> Film through the films' table (film/film_plugins.cpp: pbrt-v2's parameter names
+// and defaults, lrt draft App. C), and the frame (resolution and crop window) the film and the
+// render job both read. The display-pipeline parameters of the draft's ImageFilm (gamma, tone
+// mapping, bloom, ...) belong to output (the ToneMap statement) and are not read here.
 #include <cmath>
-#include <cstdint>
 
 #include "film/film.h"
+#include "film/film_plugins.h"
 
 namespace candela {
 
 namespace {
 
 int resolutionParam(const ParamSet& params, const std::string& name, int def, const FileLoc& loc) {
-  int v = params.getOneInt(name, def);
-  if (v < 1 || v > (1 << 20))
-    throw SceneError(params.locationOf(name, loc),
-                     "\"" + name + "\" must be between 1 and 2^20, got " + std::to_string(v));
-  return v;
-}
-
-// A float parameter that must be positive (infinity allowed only when allowInfinite).
-Float positiveParam(const ParamSet& params, const std::string& name, Float def, bool allowInfinite,
-                    const FileLoc& loc) {
-  Float v = params.getOneFloat(name, def);
-  if (!(v > 0) || (!allowInfinite && std::isinf(v)))
-    throw SceneError(params.locationOf(name, loc), "\"" + name + "\" must be positive" +
-                                                       (allowInfinite ? "" : " and finite") +
-                                                       ", got " + std::to_string(v));
-  return v;
+  return params.getOneInt(name, def, ValueRange::within(1, 1 << 20), loc);
 }
 
 Bounds2f cropParam(const ParamSet& params, const FileLoc& loc) {
@@ -65,32 +50,8 @@ FilmFrame filmFrame(const ParamSet& params, const FileLoc& loc,
 std::unique_ptr<Film> createFilm(const std::string& name, const ParamSet& params,
                                  std::unique_ptr<Filter> filter, const FileLoc& loc,
                                  std::optional<Bounds2f> cropOverride) {
-  if (name != "image") throw SceneError(loc, "unknown film \"" + name + "\" (known: image)");
-  if (!filter) throw SceneError(loc, "film: no pixel filter");
-  const auto [res, crop] = filmFrame(params, loc, cropOverride);
-  std::string filename = params.getOneString("filename", "candela.exr");
-  if (filename.empty()) throw SceneError(params.locationOf("filename", loc), "empty filename");
-  // The film keeps about 112 bytes per pixel (sums in double for the mean and the variance): past
-  // 2^27 pixels (15 GB) a render would exhaust memory rather than fail clearly.
-  constexpr int64_t kMaxPixels = int64_t(1) << 27;
-  Bounds2i bounds = Film::pixelBoundsOf(res, crop);
-  int64_t pixels = int64_t(std::max(0, bounds.pMax.x - bounds.pMin.x)) *
-                   std::max(0, bounds.pMax.y - bounds.pMin.y);
-  if (pixels > kMaxPixels)
-    throw SceneError(loc, std::string("film: ")
-                              .append(std::to_string(pixels))
-                              .append(" pixels to render (")
-                              .append(std::to_string(res.x))
-                              .append("x")
-                              .append(std::to_string(res.y))
-                              .append(" in the crop window); at most 2^27 = ")
-                              .append(std::to_string(kMaxPixels)));
-  auto film = std::make_unique<Film>(res, crop, std::move(filter), filename);
-  // pbrt-v3's film parameters (pbrt 3e §7.9).
-  film->setScale(positiveParam(params, "scale", 1, false, loc));
-  film->setMaxSampleLuminance(positiveParam(params, "maxsampleluminance", kInfinity, true, loc));
-  film->setDiagonal(positiveParam(params, "diagonal", 35, false, loc));
-  return film;
+  const FilmPlugin& plugin = requirePlugin(filmPlugins(), "film", name, loc);
+  return plugin.create(params, std::move(filter), loc, cropOverride);
 }
 
 }  // namespace candela

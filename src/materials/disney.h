@@ -33,9 +33,13 @@
 // factory warns).
 #pragma once
 
+#include <memory>
+
 #include "materials/material.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class DisneyMaterial : public Material {
  public:
@@ -52,5 +56,11 @@ class DisneyMaterial : public Material {
  private:
   Textures t_;
 };
+
+// The material of a Material "disney" statement (materials/disney_params.cpp). Constant values
+// outside their ranges are located errors: eta must be positive, difftrans in [0, 2], color and
+// scatterdistance non-negative, the others in [0, 1]; a scatterdistance that may be positive on
+// a solid surface is warned about (no subsurface scattering), once, at the parameter.
+std::unique_ptr<Material> createDisneyMaterial(MaterialInputs& in);
 
 }  // namespace candela

@@ -11,6 +11,8 @@
 
 namespace candela {
 
+class MaterialInputs;
+
 class FourierMaterial : public Material {
  public:
   FourierMaterial(std::shared_ptr<const FourierBsdfTable> table,
@@ -21,5 +23,8 @@ class FourierMaterial : public Material {
  private:
   std::shared_ptr<const FourierBsdfTable> table_;
 };
+
+// The material of a Material "fourier" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createFourierMaterial(MaterialInputs& in);
 
 }  // namespace candela

@@ -1,5 +1,6 @@
 #include "materials/glass.h"
 
+#include "materials/material_inputs.h"
 #include "reflection/specular.h"
 #include "reflection/trowbridge_reitz_bxdfs.h"
 #include "reflection/trowbridge_reitz_dielectric.h"
@@ -31,6 +32,24 @@ const BSDF* GlassMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& a
     bsdf->add(arena.make<SpecularReflection>(r, arena.make<FresnelDielectric>(Float(1), eta)));
   if (!t.isBlack()) bsdf->add(arena.make<SpecularTransmission>(t, Float(1), eta));
   return bsdf;
+}
+
+std::unique_ptr<Material> createGlassMaterial(MaterialInputs& in) {
+  const Texture<Float>* bump = in.bumpMap();
+  if (in.pbrtV3Models()) {
+    TrowbridgeReitzRoughness r;
+    r.remap = in.params().getOneBool("remaproughness", true);
+    r.u = in.scalar("uroughness", 0);
+    r.v = in.scalar("vroughness", 0);
+    // pbrt-v3 reads "eta" and, without it, "index".
+    const Texture<Float>* index =
+        in.params().find("eta") ? in.scalar("eta", 1.5f) : in.scalar("index", 1.5f);
+    return std::make_unique<GlassMaterial>(in.spectrum("Kr", Spectrum(1)),
+                                           in.spectrum("Kt", Spectrum(1)), index, r, bump);
+  }
+  return std::make_unique<GlassMaterial>(in.spectrum("Kr", Spectrum(1)),
+                                         in.spectrum("Kt", Spectrum(1)), in.scalar("index", 1.5f),
+                                         bump);
 }
 
 }  // namespace candela

@@ -8,12 +8,16 @@
 // 2007) as one BxDF that chooses by the Fresnel term of the microfacet it draws.
 #pragma once
 
+#include <memory>
+
 #include <optional>
 
 #include "materials/material.h"
 #include "materials/trowbridge_reitz_roughness.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class GlassMaterial : public Material {
  public:
@@ -33,5 +37,8 @@ class GlassMaterial : public Material {
   const Texture<Float>* index_;
   std::optional<TrowbridgeReitzRoughness> trowbridgeReitz_;
 };
+
+// The material of a Material "glass" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createGlassMaterial(MaterialInputs& in);
 
 }  // namespace candela

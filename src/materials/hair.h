@@ -5,9 +5,13 @@
 // of sigma_a, color (Chiang et al.'s inversion with beta_n) or the melanin concentrations.
 #pragma once
 
+#include <memory>
+
 #include "materials/material.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 // How the fibre's absorption coefficient is given: the first non-null of sigmaA, color, then the
 // melanins (a null concentration is 0).
@@ -34,5 +38,13 @@ class HairMaterial : public Material {
   HairAbsorption absorption_;
   const Texture<Float>*eta_, *betaM_, *betaN_, *alpha_;
 };
+
+// The material of a Material "hair" statement (materials/hair_params.cpp; pbrt-v3's parameters
+// and defaults): sigma_a, or color (turned into sigma_a by Chiang et al.'s inversion with beta_n),
+// or eumelanin and pheomelanin (a missing one is 0); eumelanin 1.3 when none is given; eta 1.55,
+// beta_m .3, beta_n .3, alpha 2 degrees. The first of sigma_a, color and the melanins given wins;
+// the others are not read, so reported as unused. Constant values outside the model's domain are
+// located errors. The material takes no bump map (pbrt-v3's does not).
+std::unique_ptr<Material> createHairMaterial(MaterialInputs& in);
 
 }  // namespace candela

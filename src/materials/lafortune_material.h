@@ -2,10 +2,15 @@
 // map. Only "clay" has its coefficients in the draft; the factory rejects the other names.
 #pragma once
 
+#include <memory>
+#include <string_view>
+
 #include "materials/material.h"
 #include "reflection/lafortune.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class LafortuneMaterial : public Material {
  public:
@@ -16,5 +21,10 @@ class LafortuneMaterial : public Material {
  private:
   LafortuneFit fit_;  // static data
 };
+
+// The material of a Material "clay" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createClayMaterial(MaterialInputs& in);
+// One of the fits the draft names (§10.9) without printing their coefficients.
+bool isUnprintedLafortuneFit(std::string_view name);
 
 }  // namespace candela

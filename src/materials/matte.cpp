@@ -1,5 +1,7 @@
 #include "materials/matte.h"
 
+#include "materials/material_inputs.h"
+
 namespace candela {
 
 namespace {
@@ -46,6 +48,12 @@ const BSDF* MatteMaterial::bumpedOrTexturedBSDF(const SurfaceInteraction& si0,
   BSDF* bsdf = arena.make<BSDF>(si);
   if (!r.isBlack()) bsdf->add(arena.make<OrenNayar>(r, sigma));
   return bsdf;
+}
+
+// Kd .5, sigma 0 (Oren-Nayar roughness in degrees; 0 is Lambertian).
+std::unique_ptr<Material> createMatteMaterial(MaterialInputs& in) {
+  return std::make_unique<MatteMaterial>(in.spectrum("Kd", Spectrum(0.5f)), in.scalar("sigma", 0),
+                                         in.bumpMap());
 }
 
 }  // namespace candela

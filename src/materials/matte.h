@@ -8,6 +8,8 @@
 
 namespace candela {
 
+class MaterialInputs;
+
 class MatteMaterial : public Material {
  public:
   MatteMaterial(const Texture<Spectrum>* kd, const Texture<Float>* sigma,
@@ -32,5 +34,8 @@ class MatteMaterial : public Material {
   std::unique_ptr<const LambertianReflection> constantLambertian_;
   std::unique_ptr<const OrenNayar> constantOrenNayar_;
 };
+
+// The material of a Material "matte" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createMatteMaterial(MaterialInputs& in);
 
 }  // namespace candela

@@ -11,6 +11,8 @@
 
 namespace candela {
 
+class MaterialInputs;
+
 class MeasuredMaterial : public Material {
  public:
   MeasuredMaterial(std::shared_ptr<const MerlBrdfTable> merl, const Texture<Float>* bump = nullptr)
@@ -24,5 +26,8 @@ class MeasuredMaterial : public Material {
   std::shared_ptr<const MerlBrdfTable> merl_;
   std::shared_ptr<const IrregularBrdfTable> irregular_;
 };
+
+// The material of a Material "measured" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createMeasuredMaterial(MaterialInputs& in);
 
 }  // namespace candela

@@ -5,12 +5,16 @@
 // conductor over the Trowbridge-Reitz distribution with Smith masking (pbrt 3e §9.2.3).
 #pragma once
 
+#include <memory>
+
 #include <optional>
 
 #include "materials/material.h"
 #include "materials/trowbridge_reitz_roughness.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 namespace copper {
 inline constexpr Spectrum kEta(0.200438f, 0.924033f, 1.10221f);
@@ -33,5 +37,8 @@ class MetalMaterial : public Material {
   const Texture<Float>* roughness_;  // pbrt-v2's Blinn roughness
   std::optional<TrowbridgeReitzRoughness> trowbridgeReitz_;
 };
+
+// The material of a Material "metal" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createMetalMaterial(MaterialInputs& in);
 
 }  // namespace candela

@@ -1,5 +1,6 @@
 #include "materials/mirror.h"
 
+#include "materials/material_inputs.h"
 #include "reflection/specular.h"
 
 namespace candela {
@@ -11,6 +12,10 @@ const BSDF* MirrorMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena& 
   Spectrum r = clampSpectrum(kr_->evaluate(si));
   if (!r.isBlack()) bsdf->add(arena.make<SpecularReflection>(r, arena.make<FresnelNoOp>()));
   return bsdf;
+}
+
+std::unique_ptr<Material> createMirrorMaterial(MaterialInputs& in) {
+  return std::make_unique<MirrorMaterial>(in.spectrum("Kr", Spectrum(0.9f)), in.bumpMap());
 }
 
 }  // namespace candela

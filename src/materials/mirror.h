@@ -2,9 +2,13 @@
 // angle (no Fresnel falloff).
 #pragma once
 
+#include <memory>
+
 #include "materials/material.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class MirrorMaterial : public Material {
  public:
@@ -16,5 +20,8 @@ class MirrorMaterial : public Material {
  private:
   const Texture<Spectrum>* kr_;
 };
+
+// The material of a Material "mirror" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createMirrorMaterial(MaterialInputs& in);
 
 }  // namespace candela

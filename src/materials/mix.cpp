@@ -1,5 +1,6 @@
 #include "materials/mix.h"
 
+#include "materials/material_inputs.h"
 #include "materials/scaled_bxdf.h"
 
 namespace candela {
@@ -19,6 +20,12 @@ const BSDF* MixMaterial::getBSDF(const SurfaceInteraction& si, MemoryArena& aren
   addScaled(b1, s1);
   addScaled(b2, s2);
   return bsdf;
+}
+
+std::unique_ptr<Material> createMixMaterial(MaterialInputs& in) {
+  const Material* m1 = in.namedMaterial("namedmaterial1");
+  const Material* m2 = in.namedMaterial("namedmaterial2");
+  return std::make_unique<MixMaterial>(m1, m2, in.spectrum("amount", Spectrum(0.5f)));
 }
 
 }  // namespace candela

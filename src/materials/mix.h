@@ -5,9 +5,13 @@
 // not applied (one BSDF has one shading frame).
 #pragma once
 
+#include <memory>
+
 #include "materials/material.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class MixMaterial : public Material {
  public:
@@ -20,5 +24,8 @@ class MixMaterial : public Material {
   const Material *m1_, *m2_;
   const Texture<Spectrum>* amount_;
 };
+
+// The material of a Material "mix" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createMixMaterial(MaterialInputs& in);
 
 }  // namespace candela

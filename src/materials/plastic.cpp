@@ -1,5 +1,6 @@
 #include "materials/plastic.h"
 
+#include "materials/material_inputs.h"
 #include "reflection/microfacet.h"
 #include "reflection/trowbridge_reitz_bxdfs.h"
 
@@ -28,6 +29,21 @@ const BSDF* PlasticMaterial::getBSDF(const SurfaceInteraction& si0, MemoryArena&
     }
   }
   return bsdf;
+}
+
+std::unique_ptr<Material> createPlasticMaterial(MaterialInputs& in) {
+  const Texture<Float>* bump = in.bumpMap();
+  if (in.pbrtV3Models()) {
+    TrowbridgeReitzRoughness r;
+    r.remap = in.params().getOneBool("remaproughness", true);
+    r.u = r.v = in.scalar("roughness", 0.1f);
+    return std::make_unique<PlasticMaterial>(in.spectrum("Kd", Spectrum(0.25f)),
+                                             in.spectrum("Ks", Spectrum(0.25f)), r, bump,
+                                             in.plasticCoat());
+  }
+  return std::make_unique<PlasticMaterial>(in.spectrum("Kd", Spectrum(0.25f)),
+                                           in.spectrum("Ks", Spectrum(0.25f)),
+                                           in.scalar("roughness", 0.1f), bump, in.plasticCoat());
 }
 
 }  // namespace candela

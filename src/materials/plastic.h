@@ -8,17 +8,17 @@
 // default; CoatFresnel::ReversedAsPbrt reproduces it for comparisons with pbrt's images.
 #pragma once
 
+#include <memory>
+
 #include <optional>
 
+#include "core/compatibility.h"
 #include "materials/material.h"
 #include "materials/trowbridge_reitz_roughness.h"
 
 namespace candela {
 
-enum class CoatFresnel {
-  Exact,           // index 1 outside, 1.5 inside
-  ReversedAsPbrt,  // pbrt's FresnelDielectric(1.5, 1) (pbrt-v3 issue #210)
-};
+class MaterialInputs;
 
 class PlasticMaterial : public Material {
  public:
@@ -47,5 +47,8 @@ class PlasticMaterial : public Material {
 
 // Blinn exponent 1 / roughness, with roughness kept away from 0 (an infinite exponent).
 Float blinnExponent(Float roughness);
+
+// The material of a Material "plastic" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createPlasticMaterial(MaterialInputs& in);
 
 }  // namespace candela

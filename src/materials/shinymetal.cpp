@@ -1,5 +1,6 @@
 #include "materials/shinymetal.h"
 
+#include "materials/material_inputs.h"
 #include "materials/plastic.h"
 #include "reflection/microfacet.h"
 #include "reflection/specular.h"
@@ -18,6 +19,12 @@ const BSDF* ShinyMetalMaterial::getBSDF(const SurfaceInteraction& si0, MemoryAre
   bsdf->add(arena.make<MicrofacetReflection>(Spectrum(1), glossy, d));
   bsdf->add(arena.make<SpecularReflection>(Spectrum(1), mirror));
   return bsdf;
+}
+
+std::unique_ptr<Material> createShinyMetalMaterial(MaterialInputs& in) {
+  return std::make_unique<ShinyMetalMaterial>(in.spectrum("Ks", Spectrum(1)),
+                                              in.spectrum("Kr", Spectrum(1)),
+                                              in.scalar("roughness", 0.1f), in.bumpMap());
 }
 
 }  // namespace candela

@@ -3,9 +3,13 @@
 // normal-incidence reflectance is Ks (glossy) or Kr (mirror) -- colours stand in for n and k.
 #pragma once
 
+#include <memory>
+
 #include "materials/material.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class ShinyMetalMaterial : public Material {
  public:
@@ -19,5 +23,8 @@ class ShinyMetalMaterial : public Material {
   const Texture<Spectrum>*ks_, *kr_;
   const Texture<Float>* roughness_;
 };
+
+// The material of a Material "shinymetal" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createShinyMetalMaterial(MaterialInputs& in);
 
 }  // namespace candela

@@ -5,12 +5,16 @@
 // alphas along dp/du and dp/dv (pbrt 3e §9.2.4).
 #pragma once
 
+#include <memory>
+
 #include <optional>
 
 #include "materials/material.h"
 #include "materials/trowbridge_reitz_roughness.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class SubstrateMaterial : public Material {
  public:
@@ -34,5 +38,8 @@ class SubstrateMaterial : public Material {
   const Texture<Float>*uRoughness_, *vRoughness_;
   std::optional<TrowbridgeReitzRoughness> trowbridgeReitz_;
 };
+
+// The material of a Material "substrate" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createSubstrateMaterial(MaterialInputs& in);
 
 }  // namespace candela

@@ -5,10 +5,14 @@
 // reflection, as in pbrt-v2).
 #pragma once
 
+#include <memory>
+
 #include "materials/material.h"
 #include "materials/subsurface_scattering.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 // "subsurface": sigma_a and sigma_prime_s given (per unit length), both multiplied by scale.
 class SubsurfaceMaterial : public Material, public SubsurfaceScattering {
@@ -52,5 +56,10 @@ class KdSubsurfaceMaterial : public Material, public SubsurfaceScattering {
   Float eta_;
   const Texture<Spectrum>* kr_;
 };
+
+// The materials of Material "subsurface" and "kdsubsurface" statements
+// (materials/subsurface_params.cpp; pbrt-v2's parameters and defaults).
+std::unique_ptr<Material> createSubsurfaceMaterial(MaterialInputs& in);
+std::unique_ptr<Material> createKdSubsurfaceMaterial(MaterialInputs& in);
 
 }  // namespace candela

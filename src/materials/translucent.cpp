@@ -1,5 +1,6 @@
 #include "materials/translucent.h"
 
+#include "materials/material_inputs.h"
 #include "materials/plastic.h"
 #include "reflection/brdf_to_btdf.h"
 #include "reflection/microfacet.h"
@@ -35,6 +36,23 @@ const BSDF* TranslucentMaterial::getBSDF(const SurfaceInteraction& si0, MemoryAr
       bsdf->add(arena.make<BRDFToBTDF>(arena.make<MicrofacetReflection>(t * ks, fresnel, d)));
   }
   return bsdf;
+}
+
+std::unique_ptr<Material> createTranslucentMaterial(MaterialInputs& in) {
+  const Texture<Float>* bump = in.bumpMap();
+  if (in.pbrtV3Models()) {
+    TrowbridgeReitzRoughness r;
+    r.remap = in.params().getOneBool("remaproughness", true);
+    r.u = r.v = in.scalar("roughness", 0.1f);
+    return std::make_unique<TranslucentMaterial>(
+        in.spectrum("Kd", Spectrum(0.25f)), in.spectrum("Ks", Spectrum(0.25f)),
+        in.spectrum("reflect", Spectrum(0.5f)), in.spectrum("transmit", Spectrum(0.5f)), r,
+        in.params().getOneFloat("index", 1.5f), bump);
+  }
+  return std::make_unique<TranslucentMaterial>(
+      in.spectrum("Kd", Spectrum(0.25f)), in.spectrum("Ks", Spectrum(0.25f)),
+      in.spectrum("reflect", Spectrum(0.5f)), in.spectrum("transmit", Spectrum(0.5f)),
+      in.scalar("roughness", 0.1f), in.params().getOneFloat("index", 1.5f), bump);
 }
 
 }  // namespace candela

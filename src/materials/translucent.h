@@ -7,12 +7,16 @@
 // its glossy transmission is true microfacet refraction into the index, not a mirrored lobe.
 #pragma once
 
+#include <memory>
+
 #include <optional>
 
 #include "materials/material.h"
 #include "materials/trowbridge_reitz_roughness.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class TranslucentMaterial : public Material {
  public:
@@ -43,5 +47,8 @@ class TranslucentMaterial : public Material {
   Float index_;
   std::optional<TrowbridgeReitzRoughness> trowbridgeReitz_;
 };
+
+// The material of a Material "translucent" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createTranslucentMaterial(MaterialInputs& in);
 
 }  // namespace candela

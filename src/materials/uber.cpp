@@ -1,5 +1,6 @@
 #include "materials/uber.h"
 
+#include "materials/material_inputs.h"
 #include "materials/plastic.h"
 #include "reflection/microfacet.h"
 #include "reflection/specular.h"
@@ -48,6 +49,34 @@ bool UberMaterial::maybeSpecular() const {
   const auto* opacity = dynamic_cast<const ConstantTexture<Spectrum>*>(t_.opacity);
   bool opaque = opacity && clampSpectrum(opacity->value(), 0, 1) == Spectrum(1);
   return !(constantBlack(t_.kr) && constantBlack(t_.kt) && opaque);
+}
+
+std::unique_ptr<Material> createUberMaterial(MaterialInputs& in) {
+  const Texture<Float>* bump = in.bumpMap();
+  if (in.pbrtV3Models()) {
+    TrowbridgeReitzRoughness r;
+    r.remap = in.params().getOneBool("remaproughness", true);
+    // v falls back to u here, to roughness in metal: pbrt-v3 differs between the two.
+    r.u = in.params().find("uroughness") ? in.scalar("uroughness", 0) : nullptr;
+    if (!r.u) r.u = in.scalar("roughness", 0.1f);
+    r.v = in.params().find("vroughness") ? in.scalar("vroughness", 0) : nullptr;
+    if (!r.v) r.v = r.u;
+    const Texture<Float>* index =
+        in.params().find("eta") ? in.scalar("eta", 1.5f) : in.scalar("index", 1.5f);
+    UberMaterial::Textures t{in.spectrum("Kd", Spectrum(0.25f)),
+                             in.spectrum("Ks", Spectrum(0.25f)),
+                             in.spectrum("Kr", Spectrum(0)),
+                             in.spectrum("opacity", Spectrum(1)),
+                             nullptr,
+                             index,
+                             in.spectrum("Kt", Spectrum(0))};
+    return std::make_unique<UberMaterial>(t, r, bump);
+  }
+  return std::make_unique<UberMaterial>(
+      UberMaterial::Textures{in.spectrum("Kd", Spectrum(0.25f)), in.spectrum("Ks", Spectrum(0.25f)),
+                             in.spectrum("Kr", Spectrum(0)), in.spectrum("opacity", Spectrum(1)),
+                             in.scalar("roughness", 0.1f), in.scalar("index", 1.5f)},
+      bump);
 }
 
 }  // namespace candela

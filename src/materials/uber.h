@@ -10,12 +10,16 @@
 // partly transparent.
 #pragma once
 
+#include <memory>
+
 #include <optional>
 
 #include "materials/material.h"
 #include "materials/trowbridge_reitz_roughness.h"
 
 namespace candela {
+
+class MaterialInputs;
 
 class UberMaterial : public Material {
  public:
@@ -39,5 +43,8 @@ class UberMaterial : public Material {
   Textures t_;
   std::optional<TrowbridgeReitzRoughness> trowbridgeReitz_;
 };
+
+// The material of a Material "uber" statement (materials/material_plugins.cpp).
+std::unique_ptr<Material> createUberMaterial(MaterialInputs& in);
 
 }  // namespace candela

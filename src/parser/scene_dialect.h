@@ -12,11 +12,10 @@
 #include <optional>
 #include <string>
 
+#include "core/compatibility.h"
 #include "parser/scene_description.h"
 
 namespace candela {
-
-enum class SceneDialect { PbrtV2, PbrtV3 };
 
 SceneDialect detectSceneDialect(const SceneDescription& desc);
 // "remaproughness" on any of the materials above; "uroughness" or "vroughness" on metal, uber or

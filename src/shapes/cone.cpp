@@ -79,8 +79,8 @@ void ConeShape::sampleObject(const Point2f& u, double p[3]) const {
 
 std::unique_ptr<Shape> createConeShape(const Transform& objectToWorld, bool reverseOrientation,
                                        const ParamSet& params) {
-  Float radius = quadricFloat(params, "cone", "radius", 1, true);
-  Float height = quadricFloat(params, "cone", "height", 1, false);
+  Float radius = params.getOneFloat("radius", 1, ValueRange::positive(), FileLoc());
+  Float height = params.getOneFloat("height", 1, ValueRange::finite(), FileLoc());
   if (height == 0)
     throw SceneError(params.locationOf("height", FileLoc()), "cone \"height\" must not be 0");
   return std::make_unique<ConeShape>(objectToWorld, reverseOrientation, height, radius,

@@ -19,20 +19,10 @@ bool isFinite(const Point3f& p) {
 }
 
 CurveType curveType(const ParamSet& params, const FileLoc& loc) {
-  std::string name = params.getOneString("type", "flat");
-  if (name == "flat") return CurveType::Flat;
+  std::string name = params.getOneString("type", "flat", {"flat", "cylinder", "ribbon"}, loc);
   if (name == "cylinder") return CurveType::Cylinder;
   if (name == "ribbon") return CurveType::Ribbon;
-  fail(params, "type", loc, "unknown curve type '" + name + "' (known: flat, cylinder, ribbon)");
-}
-
-Float nonNegativeWidth(const ParamSet& params, const char* name, Float def, const FileLoc& loc) {
-  Float w = params.getOneFloat(name, def);
-  if (!(w >= 0) || !std::isfinite(w))
-    fail(params, name, loc,
-         std::string("curve \"") + name + "\" must be finite and not negative, not " +
-             std::to_string(w));
-  return w;
+  return CurveType::Flat;
 }
 
 // Segment i of the control points, in Bézier form.
@@ -60,13 +50,10 @@ Float widthScale(const Transform& t) {
 std::vector<std::unique_ptr<Shape>> createCurveShapes(const Transform& objectToWorld,
                                                       bool reverseOrientation,
                                                       const ParamSet& params, const FileLoc& loc) {
-  std::string basis = params.getOneString("basis", "bezier");
-  if (basis != "bezier" && basis != "bspline")
-    fail(params, "basis", loc, "unknown curve basis '" + basis + "' (known: bezier, bspline)");
+  std::string basis = params.getOneString("basis", "bezier", {"bezier", "bspline"}, loc);
   bool bspline = basis == "bspline";
-  int degree = params.getOneInt("degree", 3);
-  if (degree != 2 && degree != 3)
-    fail(params, "degree", loc, "curve \"degree\" must be 2 or 3, not " + std::to_string(degree));
+  // An integer within [2, 3]: quadratic or cubic.
+  int degree = params.getOneInt("degree", 3, ValueRange::within(2, 3), loc);
   CurveType type = curveType(params, loc);
 
   // Bézier segments share their end points: 1 + k d points make k segments of degree d;
@@ -87,9 +74,9 @@ std::vector<std::unique_ptr<Shape>> createCurveShapes(const Transform& objectToW
   for (const Point3f& p : cp)
     if (!isFinite(p)) fail(params, "P", loc, "curve \"P\" has a NaN or infinite coordinate");
 
-  Float width = nonNegativeWidth(params, "width", 1, loc);
-  Float width0 = nonNegativeWidth(params, "width0", width, loc);
-  Float width1 = nonNegativeWidth(params, "width1", width, loc);
+  Float width = params.getOneFloat("width", 1, ValueRange::nonNegative(), loc);
+  Float width0 = params.getOneFloat("width0", width, ValueRange::nonNegative(), loc);
+  Float width1 = params.getOneFloat("width1", width, ValueRange::nonNegative(), loc);
 
   std::vector<Normal3f> normals = params.getNormal3fArray("N");
   if (type == CurveType::Ribbon) {
@@ -111,10 +98,7 @@ std::vector<std::unique_ptr<Shape>> createCurveShapes(const Transform& objectToW
     fail(params, "N", loc, "curve \"N\" is only used by ribbons (\"string type\" \"ribbon\")");
   }
 
-  int splitDepth = params.getOneInt("splitdepth", 3);
-  if (splitDepth < 0 || splitDepth > 12)
-    fail(params, "splitdepth", loc,
-         "curve \"splitdepth\" must lie in [0, 12], not " + std::to_string(splitDepth));
+  int splitDepth = params.getOneInt("splitdepth", 3, ValueRange::within(0, 12), loc);
   int nPieces = 1 << splitDepth;
 
   Float scale = widthScale(objectToWorld);

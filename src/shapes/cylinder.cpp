@@ -68,9 +68,9 @@ void CylinderShape::sampleObject(const Point2f& u, double p[3]) const {
 
 std::unique_ptr<Shape> createCylinderShape(const Transform& objectToWorld, bool reverseOrientation,
                                            const ParamSet& params) {
-  Float radius = quadricFloat(params, "cylinder", "radius", 1, true);
-  Float zMin = quadricFloat(params, "cylinder", "zmin", -1, false);
-  Float zMax = quadricFloat(params, "cylinder", "zmax", 1, false);
+  Float radius = params.getOneFloat("radius", 1, ValueRange::positive(), FileLoc());
+  Float zMin = params.getOneFloat("zmin", -1, ValueRange::finite(), FileLoc());
+  Float zMax = params.getOneFloat("zmax", 1, ValueRange::finite(), FileLoc());
   return std::make_unique<CylinderShape>(objectToWorld, reverseOrientation, radius, zMin, zMax,
                                          quadricPhiMax(params));
 }

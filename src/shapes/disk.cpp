@@ -83,12 +83,14 @@ void DiskShape::sampleObject(const Point2f& u, double p[3]) const {
 
 std::unique_ptr<Shape> createDiskShape(const Transform& objectToWorld, bool reverseOrientation,
                                        const ParamSet& params) {
-  Float height = quadricFloat(params, "disk", "height", 0, false);
-  Float radius = quadricFloat(params, "disk", "radius", 1, true);
-  Float inner = quadricFloat(params, "disk", "innerradius", 0, false);
-  if (inner < 0 || inner >= radius)
+  Float height = params.getOneFloat("height", 0, ValueRange::finite(), FileLoc());
+  Float radius = params.getOneFloat("radius", 1, ValueRange::positive(), FileLoc());
+  Float inner = params.getOneFloat("innerradius", 0, ValueRange::nonNegative(), FileLoc());
+  // The upper limit depends on "radius", so it is no ValueRange of its own.
+  if (inner >= radius)
     throw SceneError(params.locationOf("innerradius", FileLoc()),
-                     "disk \"innerradius\" must be in [0, radius), found " + std::to_string(inner));
+                     "\"innerradius\" must be less than \"radius\" = " + formatNumber(radius) +
+                         " (got " + formatNumber(inner) + ")");
   return std::make_unique<DiskShape>(objectToWorld, reverseOrientation, height, radius, inner,
                                      quadricPhiMax(params));
 }

@@ -43,8 +43,8 @@ std::vector<std::unique_ptr<Shape>> createHeightfieldShapes(const Transform& obj
   int nu = params.getOneInt("nu", -1), nv = params.getOneInt("nv", -1);
   if (!params.find("nu")) err("nu", "missing \"integer nu\"");
   if (!params.find("nv")) err("nv", "missing \"integer nv\"");
-  if (nu < 2) err("nu", "\"nu\" must be at least 2, found " + std::to_string(nu));
-  if (nv < 2) err("nv", "\"nv\" must be at least 2, found " + std::to_string(nv));
+  params.requireInRange("nu", nu, ValueRange::atLeast(2), loc);
+  params.requireInRange("nv", nv, ValueRange::atLeast(2), loc);
   // Products of two ints checked in 64 bits; a mesh has int vertex indices.
   long long count = (long long)nu * nv;
   if (count > (1LL << 30)) err("nu", "nu * nv = " + std::to_string(count) + " is too large");

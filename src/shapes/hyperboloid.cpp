@@ -150,12 +150,8 @@ std::unique_ptr<Shape> createHyperboloidShape(const Transform& objectToWorld,
                                               HyperboloidNormal normal) {
   Point3f p1 = params.getOnePoint3f("p1", Point3f(0, 0, 0));
   Point3f p2 = params.getOnePoint3f("p2", Point3f(1, 1, 1));
-  for (const char* name : {"p1", "p2"}) {
-    Point3f p = std::string(name) == "p1" ? p1 : p2;
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw SceneError(params.locationOf(name, FileLoc()),
-                       std::string("hyperboloid \"") + name + "\" must be finite");
-  }
+  for (auto [name, p] : {std::pair{"p1", p1}, std::pair{"p2", p2}})
+    for (Float c : {p.x, p.y, p.z}) params.requireInRange(name, c, ValueRange::finite(), FileLoc());
   if (p1.z == p2.z)
     throw SceneError(params.locationOf("p2", FileLoc()),
                      "hyperboloid \"p1\" and \"p2\" must differ in z (use a disk with an "

@@ -18,7 +18,7 @@
 
 #include <memory>
 
-#include "shapes/hyperboloid_normal.h"
+#include "core/compatibility.h"
 #include "shapes/hyperboloid_profile.h"
 #include "shapes/quadric.h"
 

@@ -20,9 +20,7 @@ std::vector<std::unique_ptr<Shape>> createLoopSubdivShapes(
     throw SceneError(params.locationOf(name, loc), std::string(kName) + ": " + message);
   };
   // Each level multiplies the faces by 4: 8 levels turn one face into 65536.
-  int levels = params.getOneInt("nlevels", 3);
-  if (levels < 0 || levels > 8)
-    err("nlevels", "\"nlevels\" must be in [0, 8], found " + std::to_string(levels));
+  int levels = params.getOneInt("nlevels", 3, ValueRange::within(0, 8), loc);
   LoopMesh control;
   for (const Point3f& v : params.getPoint3fArray("P")) control.p.push_back(v);
   control.indices = params.getIntArray("indices");

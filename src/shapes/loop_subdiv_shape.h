@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "shapes/loop_producer.h"
+#include "core/compatibility.h"
 #include "shapes/loop_subdiv.h"
 #include "shapes/triangle_mesh.h"
 

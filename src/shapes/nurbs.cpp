@@ -262,11 +262,13 @@ class Reader {
   Direction direction(const Names& nm) const {
     Direction d;
     d.n = requiredInt(nm.n);
-    if (d.n < 1) fail(nm.n, fmt::format("\"{}\" must be at least 1, found {}", nm.n, d.n));
+    params_.requireInRange(nm.n, d.n, ValueRange::atLeast(1), loc_);
     d.order = requiredInt(nm.order);
-    if (d.order < 1 || d.order > d.n)
-      fail(nm.order, fmt::format("\"{}\" must be in [1, {}] = [1, {}], found {}", nm.order, nm.n,
-                                 d.n, d.order));
+    // The upper limit is the other parameter's value, so it is checked apart from the rule.
+    params_.requireInRange(nm.order, d.order, ValueRange::atLeast(1), loc_);
+    if (d.order > d.n)
+      fail(nm.order, fmt::format("\"{}\" must be at most \"{}\" = {} (got {})", nm.order, nm.n, d.n,
+                                 d.order));
     std::vector<Float> knots = params_.getFloatArray(nm.knots);
     if (knots.empty())
       fail(nm.knots, fmt::format("missing \"float {}\" ({} + {} knots)", nm.knots, nm.n, nm.order));
@@ -290,7 +292,7 @@ class Reader {
     d.t0 = params_.find(nm.t0) ? params_.getOneFloat(nm.t0, 0) : lo;
     d.t1 = params_.find(nm.t1) ? params_.getOneFloat(nm.t1, 0) : hi;
     for (auto [name, t] : {std::pair{nm.t0, d.t0}, std::pair{nm.t1, d.t1}}) {
-      if (!std::isfinite(t)) fail(name, fmt::format("\"{}\" = {} is not finite", name, t));
+      params_.requireInRange(name, t, ValueRange::finite(), loc_);
       if (!(t >= lo && t <= hi))
         fail(name, fmt::format("\"{}\" = {} is outside the knot range [{}, {}] ({}[{}] .. [{}])",
                                name, t, lo, hi, nm.knots, d.order - 1, d.n));
@@ -298,9 +300,7 @@ class Reader {
     if (!(d.t0 < d.t1))
       fail(params_.find(nm.t1) ? nm.t1 : nm.t0,
            fmt::format("\"{}\" = {} must be less than \"{}\" = {}", nm.t0, d.t0, nm.t1, d.t1));
-    d.dice = params_.getOneInt(nm.dice, 30);
-    if (d.dice < 2)
-      fail(nm.dice, fmt::format("\"{}\" must be at least 2, found {}", nm.dice, d.dice));
+    d.dice = params_.getOneInt(nm.dice, 30, ValueRange::atLeast(2), loc_);
     return d;
   }
 

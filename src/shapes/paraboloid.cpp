@@ -83,9 +83,9 @@ void ParaboloidShape::sampleObject(const Point2f& u, double p[3]) const {
 
 std::unique_ptr<Shape> createParaboloidShape(const Transform& objectToWorld,
                                              bool reverseOrientation, const ParamSet& params) {
-  Float radius = quadricFloat(params, "paraboloid", "radius", 1, true);
-  Float zMin = quadricFloat(params, "paraboloid", "zmin", 0, false);
-  Float zMax = quadricFloat(params, "paraboloid", "zmax", 1, false);
+  Float radius = params.getOneFloat("radius", 1, ValueRange::positive(), FileLoc());
+  Float zMin = params.getOneFloat("zmin", 0, ValueRange::finite(), FileLoc());
+  Float zMax = params.getOneFloat("zmax", 1, ValueRange::finite(), FileLoc());
   if (!(std::max(zMin, zMax) > 0))
     throw SceneError(params.locationOf("zmax", FileLoc()),
                      "paraboloid \"zmax\" must be positive, found " + std::to_string(zMax));

@@ -366,15 +366,4 @@ Float quadricPhiMax(const ParamSet& params, Float def) {
                                : params.getOneFloat("thetamax", def);
 }
 
-Float quadricFloat(const ParamSet& params, const char* shape, const char* name, Float def,
-                   bool positive) {
-  Float v = params.getOneFloat(name, def);
-  if (!std::isfinite(v) || (positive && !(v > 0))) {
-    std::string what = std::string(shape) + " \"" + name + "\" must be ";
-    what += positive ? "positive and finite" : "finite";
-    throw SceneError(params.locationOf(name, FileLoc()), what + ", found " + std::to_string(v));
-  }
-  return v;
-}
-
 }  // namespace candela

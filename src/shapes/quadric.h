@@ -118,9 +118,5 @@ class Quadric : public Shape {
 // The sweep angle of a quadric's parameters: pbrt's "phimax", or the lrt draft's name for the same
 // angle, "thetamax" (lrt draft App. C), in degrees; def when neither is given.
 Float quadricPhiMax(const ParamSet& params, Float def = 360);
-// params' float `name` (or def), which must be finite, and positive when `positive`; throws a
-// SceneError at the parameter naming the shape otherwise.
-Float quadricFloat(const ParamSet& params, const char* shape, const char* name, Float def,
-                   bool positive);
 
 }  // namespace candela

@@ -150,10 +150,10 @@ Float SphereShape::pdf(const Interaction& ref, const Vector3f& wi) const {
 
 std::unique_ptr<Shape> createSphereShape(const Transform& objectToWorld, bool reverseOrientation,
                                          const ParamSet& params) {
-  Float radius = quadricFloat(params, "sphere", "radius", 1, true);
+  Float radius = params.getOneFloat("radius", 1, ValueRange::positive(), FileLoc());
   // zmin and zmax must be finite, and are then clamped to the radius.
-  Float zMin = quadricFloat(params, "sphere", "zmin", -radius, false);
-  Float zMax = quadricFloat(params, "sphere", "zmax", radius, false);
+  Float zMin = params.getOneFloat("zmin", -radius, ValueRange::finite(), FileLoc());
+  Float zMax = params.getOneFloat("zmax", radius, ValueRange::finite(), FileLoc());
   return std::make_unique<SphereShape>(objectToWorld, reverseOrientation, radius, zMin, zMax,
                                        quadricPhiMax(params));
 }

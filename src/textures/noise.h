@@ -4,6 +4,8 @@
 // would alias ("clamping", §11.2.2).
 #pragma once
 
+#include "core/compatibility.h"
+
 #include "core/vector.h"
 
 namespace candela {
@@ -30,17 +32,6 @@ Float fbm(const Point3f& p, const Vector3f& dpdx, const Vector3f& dpdy, Float om
 // The mean of |noise| over space, measured (tests/unit/test_noise.cpp checks it): what clamping
 // substitutes for the octaves of turbulence that are dropped.
 inline constexpr Float kMeanAbsNoise = 0.218f;
-
-// What the octaves of turbulence that the footprint drops contribute.
-enum class ClampedOctaves {
-  // Their mean, omega^i kMeanAbsNoise each, once: the texture's average does not change with the
-  // footprint.
-  Mean,
-  // pbrt-v2's, pbrt-v3's and pbrt-v4's: 0.2 each, the dropped octaves' sum starting at the
-  // partial octave's amplitude, whose mean so counts twice (and once even when no octave is
-  // dropped). A surface whose footprint drops octaves is brighter by about 0.2 omega^n.
-  AsPbrt,
-};
 
 // Turbulence: FBm of |noise| (pbrt-v2's "wrinkled"), the octaves the footprint drops replaced as
 // `clamped` says.

@@ -75,7 +75,7 @@ TEST(DifferentialScale, TheFloorIsPbrtV3sSamplerIntegratorsOnly) {
   test::RenderedScene bdpt = test::buildSceneText(scene("Integrator \"bdpt\"", 4));
   EXPECT_EQ(bdpt.job().minDifferentialScale, 0);
   BuildOptions asV2;
-  asV2.materialModels.dialect = SceneDialect::PbrtV2;
+  asV2.compatibility.dialect = SceneDialect::PbrtV2;
   test::RenderedScene forced = test::buildSceneText(scene("Integrator \"path\"", 4), asV2);
   EXPECT_EQ(forced.job().minDifferentialScale, 0);
 }

@@ -95,10 +95,11 @@ TEST(BdptErrors, NegativeMaxDepthIsLocated) {
 TEST(BdptErrors, UnknownLightSamplerIsLocated) {
   expectSceneError(std::string("Camera \"perspective\"\n") +
                        "Integrator \"bdpt\" \"string lightsampler\" \"bvh\"\n" + kWorld,
-                   ":2:", "unknown lightsampler 'bvh'");
-  expectSceneError(std::string("Camera \"perspective\"\n") +
-                       "Integrator \"bdpt\"\n  \"string lightsamplestrategy\" \"bvh\"\n" + kWorld,
-                   ":3:", "unknown lightsamplestrategy 'bvh' (known: uniform, power, spatial)");
+                   ":2:", "\"lightsampler\" must be one of uniform, power, spatial (got \"bvh\")");
+  expectSceneError(
+      std::string("Camera \"perspective\"\n") +
+          "Integrator \"bdpt\"\n  \"string lightsamplestrategy\" \"bvh\"\n" + kWorld,
+      ":3:", "\"lightsamplestrategy\" must be one of uniform, power, spatial (got \"bvh\")");
 }
 
 TEST(BdptErrors, CameraWithoutImportanceIsNamed) {

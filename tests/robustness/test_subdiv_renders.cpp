@@ -24,7 +24,7 @@ constexpr double kFlippedPixelFraction = 0.01, kMeanRelative = 1e-3;
 ImageBuffer render(const std::string& scene, LoopProducer producer) {
   test::TestRenderOptions o;
   o.build.seed = 5;
-  o.build.subdiv = producer;
+  o.build.compatibility.subdiv = producer;
   o.render.nThreads = 2;
   test::RenderedScene r = test::renderSceneText(scene, o);
   EXPECT_GT(r.job().stats.shapesByKind["triangle"], 0);

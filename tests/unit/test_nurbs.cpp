@@ -514,7 +514,9 @@ TEST(Nurbs, SceneFactoryMeshAndHits) {
   EXPECT_EQ(whole.mesh->uv.back(), Point2f(4, 1));   // uknots[nu]
 }
 
-void expectError(const Patch& patch, int line, const std::string& words) {
+// Rule errors ("\"nv\" must be at least 1 (got 0)") are worded alike for every plug-in and do not
+// name the shape; the nurbs' own errors do.
+void expectError(const Patch& patch, int line, const std::string& words, bool namesShape = true) {
   std::unique_ptr<TriangleMesh> mesh;
   try {
     createNurbsShapes(Transform(), false, toParams(patch), &mesh,
@@ -522,7 +524,9 @@ void expectError(const Patch& patch, int line, const std::string& words) {
     ADD_FAILURE() << "expected a SceneError about " << words;
   } catch (const SceneError& e) {
     EXPECT_EQ(e.location().line, line) << e.what();
-    EXPECT_NE(std::string(e.what()).find("nurbs: "), std::string::npos) << e.what();
+    if (namesShape) {
+      EXPECT_NE(std::string(e.what()).find("nurbs: "), std::string::npos) << e.what();
+    }
     EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
   }
 }
@@ -543,10 +547,11 @@ TEST(Nurbs, FactoryErrors) {
               }),
               lineOf("uknots"), "\"uknots\" leave no parameter range");
   expectError(with([](Patch& p) { p.uorder = 0; }), lineOf("uorder"),
-              "\"uorder\" must be in [1, nu] = [1, 3], found 0");
+              "\"uorder\" must be at least 1 (got 0)", false);
   expectError(with([](Patch& p) { p.vorder = 4; }), lineOf("vorder"),
-              "\"vorder\" must be in [1, nv] = [1, 3], found 4");
-  expectError(with([](Patch& p) { p.nv = 0; }), lineOf("nv"), "\"nv\" must be at least 1");
+              "\"vorder\" must be at most \"nv\" = 3 (got 4)");
+  expectError(with([](Patch& p) { p.nv = 0; }), lineOf("nv"), "\"nv\" must be at least 1 (got 0)",
+              false);
   expectError(with([](Patch& p) { p.P.resize(p.P.size() - 3); }), lineOf("P"),
               "\"P\" has 8 points but nu * nv = 3 * 3 = 9");
   expectError(with([](Patch& p) { p.Pw = std::vector<Float>(36, 1); }), lineOf("Pw"),
@@ -583,7 +588,7 @@ TEST(Nurbs, FactoryErrors) {
   expectError(with([](Patch& p) {
                 p.ints = {{"dicev", 1}};
               }),
-              lineOf("dicev"), "\"dicev\" must be at least 2, found 1");
+              lineOf("dicev"), "\"dicev\" must be at least 2 (got 1)", false);
   expectError(with([](Patch& p) { p.P[7] = std::numeric_limits<Float>::infinity(); }), lineOf("P"),
               "\"P\" point 2 is not finite");
   ParamSet noNu = toParams(good);
@@ -774,11 +779,11 @@ TEST(Nurbs, FactoryErrorsForDiceLimitsAndNonFiniteParameters) {
   expectError(with([&](Patch& p) {
                 p.floats = {{"u0", nan}};
               }),
-              lineOf("u0"), "\"u0\" = nan is not finite");
+              lineOf("u0"), "\"u0\" must be finite (got nan)", false);
   expectError(with([&](Patch& p) {
                 p.floats = {{"v1", inf}};
               }),
-              lineOf("v1"), "\"v1\" = inf is not finite");
+              lineOf("v1"), "\"v1\" must be finite (got inf)", false);
   expectError(with([&](Patch& p) {
                 p.Pw = {0, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 1, 1, 1, 0, nan};
                 p.nv = 2;

@@ -55,8 +55,9 @@ void expectLocatedError(std::vector<ParamItem> items, const std::string& mention
 }
 
 TEST(PathParams, BadValuesAreLocatedSceneErrors) {
-  expectLocatedError({test::strings("lightsamplestrategy", {"bvh"}, kParam)},
-                     "unknown lightsamplestrategy 'bvh' (known: uniform, power, spatial)");
+  expectLocatedError(
+      {test::strings("lightsamplestrategy", {"bvh"}, kParam)},
+      "\"lightsamplestrategy\" must be one of uniform, power, spatial (got \"bvh\")");
   for (Float bad : {-1.f, std::numeric_limits<Float>::infinity(), std::nanf("")})
     expectLocatedError({test::floats("rrthreshold", {bad}, kParam)}, "rrthreshold");
 }

@@ -37,7 +37,7 @@ struct OneMaterial {
   MemoryArena arena;
 
   OneMaterial(const std::string& name, std::vector<ParamItem> params, bool v3,
-              MaterialModelOptions models = {}) {
+              CompatibilityProfile models = {}) {
     if (v3) scene.integrator.name = "path";
     MaterialDesc m;
     m.name = name;
@@ -159,7 +159,7 @@ TEST(PbrtV3Materials, PbrtV2ScenesKeepPbrtV2Models) {
 
 TEST(PbrtV3Materials, ExplicitDialectOverridesDetection) {
   Vector3f wo = dir(30, 0), wi = dir(35, 180);
-  MaterialModelOptions v2, v3;
+  CompatibilityProfile v2, v3;
   v2.dialect = SceneDialect::PbrtV2;
   v3.dialect = SceneDialect::PbrtV3;
   OneMaterial detectedV3("plastic", {}, true), forcedV2("plastic", {}, true, v2);
@@ -178,7 +178,7 @@ TEST(PbrtV3Materials, ExplicitDialectOverridesDetection) {
 TEST(PbrtV3Materials, ReversedCoatFresnelBrightensPlasticAtGrazingAngles) {
   // pbrt's FresnelDielectric(1.5, 1) totally reflects past 41.8 degrees from the microfacet
   // normal; the exact coat reflects about 10% at 60 degrees.
-  MaterialModelOptions reversed;
+  CompatibilityProfile reversed;
   reversed.plasticCoat = CoatFresnel::ReversedAsPbrt;
   for (bool v3 : {false, true}) {
     OneMaterial exact("plastic", {test::rgb("Kd", {0, 0, 0})}, v3);
@@ -240,7 +240,7 @@ TEST(PbrtV3Materials, PbrtV2SceneRendersUnchanged) {
       "Shape \"sphere\"\nWorldEnd\n";
   auto render = [&](std::optional<SceneDialect> d) {
     test::TestRenderOptions o;
-    o.build.materialModels.dialect = d;
+    o.build.compatibility.dialect = d;
     return test::renderSceneText(scene, o).film().image().data;
   };
   std::vector<float> detected = render(std::nullopt);

@@ -181,7 +181,7 @@ TEST(TextureFactory, Errors) {
   };
   std::string e = useS("weird");
   EXPECT_NE(e.find("scene.pbrt:7:1"), std::string::npos) << e;
-  EXPECT_NE(e.find("unknown texture class 'plaid'"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown texture 'plaid'"), std::string::npos) << e;
   for (const char* known : {"checkerboard", "imagemap", "marble", "wrinkled", "windy", "bilerp"})
     EXPECT_NE(e.find(known), std::string::npos) << known;
   e = useS("f");
@@ -191,8 +191,10 @@ TEST(TextureFactory, Errors) {
   EXPECT_NE(e.find("no spectrum texture named 'nothing'"), std::string::npos) << e;
   EXPECT_NE(useF("uvf").find("spectrum textures only"), std::string::npos);
   EXPECT_NE(useF("marblef").find("spectrum textures only"), std::string::npos);
-  EXPECT_NE(useF("cube").find("dimension must be 2 or 3"), std::string::npos);
-  EXPECT_NE(useF("aa").find("unknown checkerboard aamode 'fancy'"), std::string::npos);
+  EXPECT_NE(useF("cube").find("\"dimension\" must be within [2, 3] (got 4)"), std::string::npos);
+  EXPECT_NE(
+      useF("aa").find("\"aamode\" must be one of closedform, supersample, none (got \"fancy\")"),
+      std::string::npos);
   EXPECT_NE(useF("map").find("unknown texture mapping 'cubic'"), std::string::npos);
 }
 
@@ -269,7 +271,8 @@ TEST(TextureFactory, ImageErrorsNameThePath) {
   EXPECT_NE(e.find("/scenes/a/missing.png"), std::string::npos) << e;
   EXPECT_NE(e.find("no such file"), std::string::npos) << e;
   EXPECT_NE(use("nofile").find("needs a \"string filename\""), std::string::npos);
-  EXPECT_NE(use("wrap").find("unknown wrap mode 'mirror'"), std::string::npos);
+  EXPECT_NE(use("wrap").find("\"wrap\" must be one of repeat, black, clamp (got \"mirror\")"),
+            std::string::npos);
   EXPECT_EQ(fake.calls.size(), 1u);  // the parameter errors came before any reading
 
   TextureFactory noReader(descs);
