@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <map>
 #include <memory>
@@ -452,6 +453,25 @@ TEST(PluginTables, DescribeAndListComeFromTheTables) {
   EXPECT_NE(hair.find("\"float texture beta_m\""), std::string::npos) << hair;
   EXPECT_NE(hair.find("within (0, 1]"), std::string::npos) << hair;
   EXPECT_TRUE(describePlugins("no-such-plugin").empty());
+}
+
+// The README's one-screen table of what is supported names every plug-in of the kinds it lists,
+// so that a new table entry cannot be missing from it.
+TEST(PluginTables, TheReadmeTableNamesEveryPlugin) {
+  std::ifstream in(std::string(CANDELA_SOURCE_DIR) + "/README.md");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string readme = ss.str();
+  size_t from = readme.find("## What it supports");
+  ASSERT_NE(from, std::string::npos);
+  std::string table = readme.substr(from, readme.find("\n## ", from + 1) - from);
+  for (const PluginKind& k : pluginKinds()) {
+    if (k.kind == "film" || k.kind == "renderer" || k.kind == "bump map" || k.kind == "area light")
+      continue;  // one each, or named in prose
+    for (const PluginSpec* p : k.plugins)
+      EXPECT_NE(table.find("`" + std::string(p->name) + "`"), std::string::npos)
+          << k.kind << " '" << p->name << "' is missing from the README's table";
+  }
 }
 
 }  // namespace
