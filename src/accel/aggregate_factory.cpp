@@ -10,15 +10,7 @@ namespace {
 // The table's entry for name ("" = the default, the table's first), or its unknown-name error.
 const AcceleratorPlugin& requireAccelerator(const std::string& name, const FileLoc& loc) {
   std::string_view wanted = name.empty() ? acceleratorPlugins().front().spec.name : name;
-  try {
-    return requirePlugin(acceleratorPlugins(), "accelerator", std::string(wanted), loc);
-  } catch (const SceneError& e) {
-    if (!loc.file.empty()) throw;
-    // Options set outside any file (a test, a library caller) have no location to name: the
-    // same message without one.
-    std::string what = e.what();
-    throw SceneError(what.substr(what.find("error: ") + 7));
-  }
+  return requirePlugin(acceleratorPlugins(), "accelerator", std::string(wanted), loc);
 }
 
 }  // namespace

@@ -184,38 +184,30 @@ constexpr std::string_view kAtLeast1 = "at least 1";
 constexpr std::string_view kOpenUnit = "within (-1, 1)";
 constexpr unsigned kV2 = kLrt | kPbrtV2;
 
-constexpr ParamSpec kRegionParams[] = {
-    {"sigma_a", "spectrum", "0 0 0", "", kNonNegative, kV2, "absorption per unit length"},
-    {"sigma_s", "spectrum", "0 0 0", "", kNonNegative, kV2, "scattering per unit length"},
-    {"Le", "spectrum", "0 0 0", "", kNonNegative, kV2, "emitted radiance per unit length"},
-    {"phase", "string", "hg", "", kPhaseRule, kCandela, "phase function"},
-    {"g", "float", "0", "", kOpenUnit, kV2, "asymmetry of the hg and schlick phase functions"},
-    {"p0", "point3", "0 0 0", "", "", kV2, "lower corner of the box"},
-    {"p1", "point3", "1 1 1", "", "", kV2, "upper corner of the box"}};
+constexpr std::array<ParamSpec, 7> kRegionParams = {
+    {{"sigma_a", "spectrum", "0 0 0", "", kNonNegative, kV2, "absorption per unit length"},
+     {"sigma_s", "spectrum", "0 0 0", "", kNonNegative, kV2, "scattering per unit length"},
+     {"Le", "spectrum", "0 0 0", "", kNonNegative, kV2, "emitted radiance per unit length"},
+     {"phase", "string", "hg", "", kPhaseRule, kCandela, "phase function"},
+     {"g", "float", "0", "", kOpenUnit, kV2, "asymmetry of the hg and schlick phase functions"},
+     {"p0", "point3", "0 0 0", "", "", kV2, "lower corner of the box"},
+     {"p1", "point3", "1 1 1", "", "", kV2, "upper corner of the box"}}};
 // The same, then the region's own.
-constexpr ParamSpec kExponentialParams[] = {
-    kRegionParams[0],
-    kRegionParams[1],
-    kRegionParams[2],
-    kRegionParams[3],
-    kRegionParams[4],
-    kRegionParams[5],
-    kRegionParams[6],
-    {"a", "float", "1", "", kNonNegative, kV2, "density at p0"},
-    {"b", "float", "1", "", "finite", kV2, "falloff rate with height"},
-    {"updir", "vector3", "0 1 0", "", "", kV2, "direction height is measured along"}};
-constexpr ParamSpec kGridParams[] = {
-    kRegionParams[0],
-    kRegionParams[1],
-    kRegionParams[2],
-    kRegionParams[3],
-    kRegionParams[4],
-    kRegionParams[5],
-    kRegionParams[6],
-    {"nx", "integer", "1", "", kAtLeast1, kV2, "samples along x"},
-    {"ny", "integer", "1", "", kAtLeast1, kV2, "samples along y"},
-    {"nz", "integer", "1", "", kAtLeast1, kV2, "samples along z"},
-    {"density", "float[]", "(required)", "", kNonNegative, kV2, "nx*ny*nz densities, x fastest"}};
+constexpr auto kExponentialParams =
+    joinParams(kRegionParams,
+               std::to_array<ParamSpec>({
+                   {"a", "float", "1", "", kNonNegative, kV2, "density at p0"},
+                   {"b", "float", "1", "", "finite", kV2, "falloff rate with height"},
+                   {"updir", "vector3", "0 1 0", "", "", kV2, "direction height is measured along"},
+               }));
+constexpr auto kGridParams =
+    joinParams(kRegionParams, std::to_array<ParamSpec>({
+                                  {"nx", "integer", "1", "", kAtLeast1, kV2, "samples along x"},
+                                  {"ny", "integer", "1", "", kAtLeast1, kV2, "samples along y"},
+                                  {"nz", "integer", "1", "", kAtLeast1, kV2, "samples along z"},
+                                  {"density", "float[]", "(required)", "", kNonNegative, kV2,
+                                   "nx*ny*nz densities, x fastest"},
+                              }));
 
 constexpr VolumeRegionPlugin kRegions[] = {
     {{"volume region", "homogeneous", kV2,

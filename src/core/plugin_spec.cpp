@@ -20,7 +20,10 @@ void throwUnknownPlugin(const FileLoc& loc, std::string_view kind, const std::st
                         const std::vector<std::string_view>& known) {
   std::string list;
   for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-  throw SceneError(loc, "unknown " + std::string(kind) + " '" + name + "' (known: " + list + ")");
+  std::string message = "unknown " + std::string(kind) + " '" + name + "' (known: " + list + ")";
+  // Names given outside any file (a command-line option, a library caller) have no location.
+  if (loc.file.empty()) throw SceneError(message);
+  throw SceneError(loc, message);
 }
 
 std::string describePlugin(const PluginSpec& spec) {

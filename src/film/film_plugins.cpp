@@ -34,13 +34,8 @@ std::unique_ptr<Film> createImageFilm(const ParamSet& params, std::unique_ptr<Fi
   film->setMaxSampleLuminance(
       params.getOneFloat("maxsampleluminance", kInfinity, ValueRange::greaterThan(0), loc));
   film->setDiagonal(params.getOneFloat("diagonal", 35, ValueRange::positive(), loc));
-  // candela's output parameters. The render job adds the command line's --aov to "aovs" and
-  // gives "compression" and "half" (overridden by --compression and --half) to the EXR writer;
-  // they are read here as well so that the film's table holds every Film parameter and a bad
-  // value is reported with the film's others.
-  film->enableAovs(parseAovList(params.getOneString("aovs", ""), params.locationOf("aovs", loc)));
-  params.getOneString("compression", "zip");
-  params.getOneBool("half", false);
+  // candela's output parameters "aovs", "compression" and "half" are read by the render job
+  // (assembly/render_job.cpp), which joins them with --aov, --compression and --half.
   return film;
 }
 
