@@ -5,7 +5,7 @@
 #include <string>
 
 #include "film/error_metrics.h"
-#include "renderers/progressive_render.h"
+#include "integrators/progressive_render.h"
 
 namespace candela {
 

@@ -15,8 +15,8 @@
 #include "film/film.h"
 #include "film/output/image_output.h"
 #include "integrators/integrator.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "parser/scene_description.h"
-#include "renderers/sampler_renderer.h"
 
 namespace candela {
 

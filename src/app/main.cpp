@@ -21,10 +21,10 @@
 #include "film/error_metrics.h"
 #include "film/output/image_output.h"
 #include "film/output/texture_loader.h"
+#include "integrators/pixel_sample_integrator.h"
+#include "integrators/progressive_render.h"
 #include "parser/parser.h"
 #include "parser/scene_builder.h"
-#include "renderers/progressive_render.h"
-#include "renderers/sampler_renderer.h"
 
 using namespace candela;
 
@@ -103,22 +103,18 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   // The variance estimate needs each pixel's own samples to carry all of its light; splatted
   // light (bdpt, light tracing, Metropolis) and photon densities (sppm) are not in them, so a
   // target could never be met, or would be met too early.
-  if (cli.targetError > 0 && cli.reference.empty() &&
-      (job.imageRenderer || (job.integrator && job.integrator->splats())))
+  const PixelLight pixelLight = job.integrator->pixelLight();
+  if (cli.targetError > 0 && cli.reference.empty() && pixelLight != PixelLight::OwnSamples)
     throw std::runtime_error(
         "--target-error without --reference estimates the error from each pixel's variance, "
-        "which this scene's " +
-        std::string(job.imageRenderer ? "renderer" : "integrator") +
-        " does not keep (its light is splatted or gathered from photons): give --reference, or "
-        "--time-budget");
+        "which this scene's integrator does not keep (its light is splatted or gathered from "
+        "photons): give --reference, or --time-budget");
   if (cli.sampleRange) checkSampleRange(job, *cli.sampleRange);
-  if (cli.tile && cli.tile->count > 1 && !cli.quiet &&
-      (job.imageRenderer || job.integrator->splats()))
+  if (cli.tile && cli.tile->count > 1 && !cli.quiet && pixelLight != PixelLight::OwnSamples)
     std::fprintf(stderr,
-                 "candela: warning: --tile: this scene's %s spreads each sample's light across "
-                 "the image, so each tile does much of the whole image's work (its pixels are "
-                 "still the whole render's)\n",
-                 job.imageRenderer ? "renderer" : "integrator");
+                 "candela: warning: --tile: this scene's integrator spreads each sample's light "
+                 "across the image, so each tile does much of the whole image's work (its pixels "
+                 "are still the whole render's)\n");
   if (cli.stats) std::fprintf(stderr, "%s", job.stats.report().c_str());
   writer.checkOutputs(job.film->filename(), frameIndex, inputs);
 
@@ -142,11 +138,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   const RenderResult& result = pr.total;
   const int spp = pr.spp;
   // What the integrator or renderer built (photon maps; the irradiance cache, while rendering).
-  if (cli.stats)
-    std::fprintf(
-        stderr, "%s",
-        (job.imageRenderer ? job.imageRenderer->statsReport() : job.integrator->statsReport())
-            .c_str());
+  if (cli.stats) std::fprintf(stderr, "%s", job.integrator->statsReport().c_str());
   if (!cli.quiet) {
     uint64_t rays = result.rays.intersectionRays + result.rays.shadowRays;
     std::fprintf(stderr,
@@ -191,10 +183,8 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   // The sums need every bit of their floats; `candela merge` writes the half image.
   if (cli.sampleRange) exr.half = false;
   writer.write(*job.film, desc, spp, result, frameIndex, extra, exr);
-  if (job.integrator) {
-    std::vector<NamedImage> images = job.integrator->extraImages(*job.film);
-    if (!images.empty()) writer.writeBeside(*job.film, frameIndex, images, exr);
-  }
+  std::vector<NamedImage> images = job.integrator->extraImages(*job.film);
+  if (!images.empty()) writer.writeBeside(*job.film, frameIndex, images, exr);
 }
 
 }  // namespace

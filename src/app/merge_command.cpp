@@ -16,7 +16,7 @@
 #include "film/output/image_output.h"
 #include "film/output/image_plugin.h"
 #include "filters/box_filter.h"
-#include "renderers/tile_grid.h"
+#include "integrators/tile_grid.h"
 
 namespace candela {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "renderers/tile_grid.h"
+#include "integrators/tile_grid.h"
 
 namespace candela {
 

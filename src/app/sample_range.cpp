@@ -9,11 +9,12 @@ void checkSampleRange(const RenderJob& job, const IndexRange& range) {
   auto refuse = [&](const std::string& why) {
     return SceneError(FileLoc{"--sample-range " + range.str(), 0, 0}, why);
   };
-  if (job.imageRenderer)
+  const PixelLight pixelLight = job.integrator->pixelLight();
+  if (pixelLight == PixelLight::WholeImage)
     throw refuse(
-        "this scene's renderer (Metropolis or SPPM) renders the whole image at once; "
+        "this scene's integrator (Metropolis or SPPM) renders the whole image at once; "
         "split it with --tile instead");
-  if (job.integrator->splats())
+  if (pixelLight == PixelLight::Splatted)
     throw refuse(
         "this scene's integrator adds light to other pixels than the sample's own, "
         "which the pixels' sums do not keep");

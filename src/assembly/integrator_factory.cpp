@@ -58,8 +58,8 @@ IrradianceCacheSettings irradianceCacheParams(const PluginDesc& desc) {
 }  // namespace
 
 // pbrt-v2's "igi" parameters and defaults (pbrt 2e §15.4).
-std::unique_ptr<SurfaceIntegrator> createIgiIntegrator(const PluginDesc& desc, const Camera*,
-                                                       const Bounds2i&, SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createIgiIntegrator(const PluginDesc& desc, const Camera*,
+                                                           const Bounds2i&, SceneDialect) {
   const ParamSet& p = desc.params;
   const FileLoc& at = desc.loc;
   IgiParameters igi;
@@ -101,8 +101,8 @@ Float rrThresholdParam(const PluginDesc& desc) {
 // pbrt-v2/lrt "bidirectional" (maxdepth; the draft's integrator has no parameters of its own) and,
 // with v3Params, pbrt-v3 "bdpt" (maxdepth, lightsamplestrategy, visualizestrategies,
 // visualizeweights).
-std::unique_ptr<SurfaceIntegrator> bdptIntegrator(const PluginDesc& desc, const Camera* camera,
-                                                  const Bounds2i& pixelBounds, bool v3Params) {
+std::unique_ptr<PixelSampleIntegrator> bdptIntegrator(const PluginDesc& desc, const Camera* camera,
+                                                      const Bounds2i& pixelBounds, bool v3Params) {
   const ParamSet& p = desc.params;
   int maxDepth = maxDepthParam(desc, false);
   LightSampleStrategy strategy = LightSampleStrategy::Power;
@@ -174,23 +174,25 @@ std::vector<SubsurfacePoint> readSubsurfacePointsFile(const std::string& path, c
 
 }  // namespace
 
-std::unique_ptr<SurfaceIntegrator> createBdptIntegrator(const PluginDesc& desc,
-                                                        const Camera* camera,
-                                                        const Bounds2i& pixelBounds, SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createBdptIntegrator(const PluginDesc& desc,
+                                                            const Camera* camera,
+                                                            const Bounds2i& pixelBounds,
+                                                            SceneDialect) {
   return bdptIntegrator(desc, camera, pixelBounds, true);
 }
 
-std::unique_ptr<SurfaceIntegrator> createBidirectionalIntegrator(const PluginDesc& desc,
-                                                                 const Camera* camera,
-                                                                 const Bounds2i& pixelBounds,
-                                                                 SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createBidirectionalIntegrator(const PluginDesc& desc,
+                                                                     const Camera* camera,
+                                                                     const Bounds2i& pixelBounds,
+                                                                     SceneDialect) {
   return bdptIntegrator(desc, camera, pixelBounds, false);
 }
 
 // pbrt-v2's "dipolesubsurface" (pbrt 2e §16.5).
-std::unique_ptr<SurfaceIntegrator> createDipoleSubsurfaceIntegrator(const PluginDesc& desc,
-                                                                    const Camera*, const Bounds2i&,
-                                                                    SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createDipoleSubsurfaceIntegrator(const PluginDesc& desc,
+                                                                        const Camera*,
+                                                                        const Bounds2i&,
+                                                                        SceneDialect) {
   const ParamSet& p = desc.params;
   DipoleSubsurfaceSettings s;
   s.maxDepth = maxDepthParam(desc, true);
@@ -209,8 +211,8 @@ std::unique_ptr<SurfaceIntegrator> createDipoleSubsurfaceIntegrator(const Plugin
 // pbrt-v3's "rrthreshold" and "lightsamplestrategy" (default 1 and "spatial" in pbrt-v3 scenes;
 // pbrt-v2's path has neither: every path faces roulette, lights are chosen uniformly, unless the
 // scene gives the parameters).
-std::unique_ptr<SurfaceIntegrator> createPathIntegrator(const PluginDesc& desc, const Camera*,
-                                                        const Bounds2i&, SceneDialect dialect) {
+std::unique_ptr<PixelSampleIntegrator> createPathIntegrator(const PluginDesc& desc, const Camera*,
+                                                            const Bounds2i&, SceneDialect dialect) {
   const ParamSet& p = desc.params;
   const bool v3 = dialect == SceneDialect::PbrtV3;
   PathSettings s;
@@ -222,8 +224,9 @@ std::unique_ptr<SurfaceIntegrator> createPathIntegrator(const PluginDesc& desc, 
 }
 
 // pbrt-v3's VolPathIntegrator parameters and defaults.
-std::unique_ptr<SurfaceIntegrator> createVolPathIntegrator(const PluginDesc& desc, const Camera*,
-                                                           const Bounds2i&, SceneDialect dialect) {
+std::unique_ptr<PixelSampleIntegrator> createVolPathIntegrator(const PluginDesc& desc,
+                                                               const Camera*, const Bounds2i&,
+                                                               SceneDialect dialect) {
   // One at a time: a call's arguments are read in no set order, and the first bad one is reported.
   int maxDepth = maxDepthParam(desc, false);
   Float rrThreshold = rrThresholdParam(desc);
@@ -231,9 +234,10 @@ std::unique_ptr<SurfaceIntegrator> createVolPathIntegrator(const PluginDesc& des
   return std::make_unique<VolPathIntegrator>(maxDepth, rrThreshold, strategy);
 }
 
-std::unique_ptr<SurfaceIntegrator> createDirectLightingIntegrator(const PluginDesc& desc,
-                                                                  const Camera*, const Bounds2i&,
-                                                                  SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createDirectLightingIntegrator(const PluginDesc& desc,
+                                                                      const Camera*,
+                                                                      const Bounds2i&,
+                                                                      SceneDialect) {
   int maxDepth = maxDepthParam(desc, true);
   std::string strategy = desc.params.getOneString("strategy", "all", {"all", "one"}, desc.loc);
   DirectLightingIntegrator::Strategy s = strategy == "all"
@@ -242,14 +246,16 @@ std::unique_ptr<SurfaceIntegrator> createDirectLightingIntegrator(const PluginDe
   return std::make_unique<DirectLightingIntegrator>(s, maxDepth);
 }
 
-std::unique_ptr<SurfaceIntegrator> createWhittedIntegrator(const PluginDesc& desc, const Camera*,
-                                                           const Bounds2i&, SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createWhittedIntegrator(const PluginDesc& desc,
+                                                               const Camera*, const Bounds2i&,
+                                                               SceneDialect) {
   return std::make_unique<WhittedIntegrator>(maxDepthParam(desc, true));
 }
 
-std::unique_ptr<SurfaceIntegrator> createAmbientOcclusionIntegrator(const PluginDesc& desc,
-                                                                    const Camera*, const Bounds2i&,
-                                                                    SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createAmbientOcclusionIntegrator(const PluginDesc& desc,
+                                                                        const Camera*,
+                                                                        const Bounds2i&,
+                                                                        SceneDialect) {
   const ParamSet& p = desc.params;
   // pbrt-v2's defaults: 2048 directions, unbounded probe rays.
   int nSamples = p.getOneInt("nsamples", 2048, ValueRange::atLeast(1), desc.loc);
@@ -260,8 +266,8 @@ std::unique_ptr<SurfaceIntegrator> createAmbientOcclusionIntegrator(const Plugin
 }
 
 // pbrt-v3's AOIntegrator: 64 directions, unbounded probes, the unnormalised cosine integral.
-std::unique_ptr<SurfaceIntegrator> createAoIntegrator(const PluginDesc& desc, const Camera*,
-                                                      const Bounds2i&, SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createAoIntegrator(const PluginDesc& desc, const Camera*,
+                                                          const Bounds2i&, SceneDialect) {
   const ParamSet& p = desc.params;
   int nSamples = p.getOneInt("nsamples", 64, ValueRange::atLeast(1), desc.loc);
   bool cosSample = p.getOneBool("cossample", true);
@@ -269,29 +275,31 @@ std::unique_ptr<SurfaceIntegrator> createAoIntegrator(const PluginDesc& desc, co
       nSamples, kInfinity, cosSample, AmbientOcclusionIntegrator::Estimate::UnoccludedCosine);
 }
 
-std::unique_ptr<SurfaceIntegrator> createIrradianceCacheIntegrator(const PluginDesc& desc,
-                                                                   const Camera*, const Bounds2i&,
-                                                                   SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createIrradianceCacheIntegrator(const PluginDesc& desc,
+                                                                       const Camera*,
+                                                                       const Bounds2i&,
+                                                                       SceneDialect) {
   return std::make_unique<IrradianceCacheIntegrator>(irradianceCacheParams(desc));
 }
 
 // pbrt-v2 registers its photon mapper under both names; nothing differs.
-std::unique_ptr<SurfaceIntegrator> createPhotonMapIntegrator(const PluginDesc& desc, const Camera*,
-                                                             const Bounds2i&, SceneDialect) {
+std::unique_ptr<PixelSampleIntegrator> createPhotonMapIntegrator(const PluginDesc& desc,
+                                                                 const Camera*, const Bounds2i&,
+                                                                 SceneDialect) {
   return std::make_unique<PhotonMapIntegrator>(photonMapSettings(desc));
 }
 
-std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
-                                                           const Camera* camera,
-                                                           const Bounds2i& pixelBounds,
-                                                           SceneDialect dialect) {
+std::unique_ptr<PixelSampleIntegrator> createSurfaceIntegrator(const PluginDesc& desc,
+                                                               const Camera* camera,
+                                                               const Bounds2i& pixelBounds,
+                                                               SceneDialect dialect) {
   const IntegratorPlugin& plugin =
       requirePlugin(integratorPlugins(), "integrator", desc.name, desc.loc);
-  // "sppm" and "mlt": createImageRenderer makes them, so only a direct call gets here.
-  if (!plugin.makeSurfaceIntegrator)
+  // "sppm" and "mlt": createWholeImageIntegrator makes them, so only a direct call gets here.
+  if (!plugin.makePixelSampleIntegrator)
     throw SceneError(desc.loc, "integrator '" + desc.name +
                                    "' renders the whole image; it is not a surface integrator");
-  return plugin.makeSurfaceIntegrator(desc, camera, pixelBounds, dialect);
+  return plugin.makePixelSampleIntegrator(desc, camera, pixelBounds, dialect);
 }
 
 }  // namespace candela

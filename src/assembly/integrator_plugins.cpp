@@ -249,7 +249,7 @@ const IntegratorPlugin kIntegrators[] = {
     {{"integrator", "sppm", kPbrtV3,
       "stochastic progressive photon mapping, the whole image (pbrt 3e §16.2)", kSppm},
      nullptr,
-     createSppmRenderer},
+     createSppmIntegrator},
     {{"integrator", "volpath", kPbrtV3, "path tracing through participating media (pbrt 3e §15.2)",
       kVolPath},
      createVolPathIntegrator},
@@ -262,8 +262,8 @@ const IntegratorPlugin kRenderers[] = {
     {{"renderer", "metropolis", kPbrtV2,
       "Metropolis light transport, the whole image (pbrt 2e §15.7)", kMetropolis},
      nullptr,
-     createMetropolisRenderer},
-    // No create function: createImageRenderer gives none, and the sampler renderer runs.
+     createMetropolisIntegrator},
+    // No create function: createWholeImageIntegrator gives none, and the sampler renderer runs.
     {{"renderer",
       "sampler",
       kPbrtV2,

@@ -1,6 +1,6 @@
 // The integrator and renderer tables: every name the SurfaceIntegrator (pbrt-v2, lrt), Integrator
 // (pbrt-v3) and Renderer (pbrt-v2) statements accept, with what each reads. createSurfaceIntegrator
-// and createImageRenderer dispatch through them, and their unknown-name errors list them.
+// and createWholeImageIntegrator dispatch through them, and their unknown-name errors list them.
 #pragma once
 
 #include <memory>
@@ -11,75 +11,77 @@
 
 namespace candela {
 
-// The surface integrator the sampler renderer runs (arguments as createSurfaceIntegrator's).
-using SurfaceIntegratorCreator = std::unique_ptr<SurfaceIntegrator> (*)(const PluginDesc& desc,
-                                                                        const Camera* camera,
-                                                                        const Bounds2i& pixelBounds,
-                                                                        SceneDialect dialect);
-// A renderer of the whole image, in place of the sampler renderer and a surface integrator.
-using ImageRendererCreator =
-    std::unique_ptr<ImageRenderer> (*)(const PluginDesc& desc, const ImageRendererContext& context);
+// An integrator of camera samples, pixel by pixel (arguments as createSurfaceIntegrator's).
+using PixelSampleIntegratorCreator =
+    std::unique_ptr<PixelSampleIntegrator> (*)(const PluginDesc& desc, const Camera* camera,
+                                               const Bounds2i& pixelBounds, SceneDialect dialect);
+// An integrator of the whole image at once (SPPM, Metropolis).
+using WholeImageIntegratorCreator =
+    std::unique_ptr<Integrator> (*)(const PluginDesc& desc, const WholeImageContext& context);
 
 struct IntegratorPlugin {
   PluginSpec spec;
-  // An integrator sets exactly one. A renderer sets makeImageRenderer, or neither ("sampler":
-  // the sampler renderer, running the scene's surface integrator).
-  SurfaceIntegratorCreator makeSurfaceIntegrator = nullptr;
-  ImageRendererCreator makeImageRenderer = nullptr;
+  // An integrator sets exactly one. A renderer sets makeWholeImageIntegrator, or neither
+  // ("sampler": the scene's pixel-sample integrator renders).
+  PixelSampleIntegratorCreator makePixelSampleIntegrator = nullptr;
+  WholeImageIntegratorCreator makeWholeImageIntegrator = nullptr;
 };
 
 // Kind "integrator": the names of SurfaceIntegrator and Integrator, "sppm" and "mlt" included.
 std::span<const IntegratorPlugin> integratorPlugins();
 // Kind "renderer": the names of Renderer that candela implements. Any other renders with the
-// sampler renderer, after a warning (render_job.cpp).
+// scene's pixel-sample integrator, after a warning (render_job.cpp).
 std::span<const IntegratorPlugin> rendererPlugins();
 
-// The surface integrators' create functions (integrator_factory.cpp), which the table points to.
-std::unique_ptr<SurfaceIntegrator> createAmbientOcclusionIntegrator(const PluginDesc& desc,
-                                                                    const Camera* camera,
-                                                                    const Bounds2i& pixelBounds,
-                                                                    SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createAoIntegrator(const PluginDesc& desc, const Camera* camera,
-                                                      const Bounds2i& pixelBounds,
-                                                      SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createBdptIntegrator(const PluginDesc& desc,
-                                                        const Camera* camera,
-                                                        const Bounds2i& pixelBounds,
-                                                        SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createBidirectionalIntegrator(const PluginDesc& desc,
+// The pixel-sample integrators' create functions (integrator_factory.cpp), which the table points
+// to.
+std::unique_ptr<PixelSampleIntegrator> createAmbientOcclusionIntegrator(const PluginDesc& desc,
+                                                                        const Camera* camera,
+                                                                        const Bounds2i& pixelBounds,
+                                                                        SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createAoIntegrator(const PluginDesc& desc,
+                                                          const Camera* camera,
+                                                          const Bounds2i& pixelBounds,
+                                                          SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createBdptIntegrator(const PluginDesc& desc,
+                                                            const Camera* camera,
+                                                            const Bounds2i& pixelBounds,
+                                                            SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createBidirectionalIntegrator(const PluginDesc& desc,
+                                                                     const Camera* camera,
+                                                                     const Bounds2i& pixelBounds,
+                                                                     SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createDipoleSubsurfaceIntegrator(const PluginDesc& desc,
+                                                                        const Camera* camera,
+                                                                        const Bounds2i& pixelBounds,
+                                                                        SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createDirectLightingIntegrator(const PluginDesc& desc,
+                                                                      const Camera* camera,
+                                                                      const Bounds2i& pixelBounds,
+                                                                      SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createIgiIntegrator(const PluginDesc& desc,
+                                                           const Camera* camera,
+                                                           const Bounds2i& pixelBounds,
+                                                           SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createIrradianceCacheIntegrator(const PluginDesc& desc,
+                                                                       const Camera* camera,
+                                                                       const Bounds2i& pixelBounds,
+                                                                       SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createPathIntegrator(const PluginDesc& desc,
+                                                            const Camera* camera,
+                                                            const Bounds2i& pixelBounds,
+                                                            SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createPhotonMapIntegrator(const PluginDesc& desc,
                                                                  const Camera* camera,
                                                                  const Bounds2i& pixelBounds,
                                                                  SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createDipoleSubsurfaceIntegrator(const PluginDesc& desc,
-                                                                    const Camera* camera,
-                                                                    const Bounds2i& pixelBounds,
-                                                                    SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createDirectLightingIntegrator(const PluginDesc& desc,
-                                                                  const Camera* camera,
-                                                                  const Bounds2i& pixelBounds,
-                                                                  SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createIgiIntegrator(const PluginDesc& desc, const Camera* camera,
-                                                       const Bounds2i& pixelBounds,
-                                                       SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createIrradianceCacheIntegrator(const PluginDesc& desc,
-                                                                   const Camera* camera,
-                                                                   const Bounds2i& pixelBounds,
-                                                                   SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createPathIntegrator(const PluginDesc& desc,
-                                                        const Camera* camera,
-                                                        const Bounds2i& pixelBounds,
-                                                        SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createPhotonMapIntegrator(const PluginDesc& desc,
-                                                             const Camera* camera,
-                                                             const Bounds2i& pixelBounds,
-                                                             SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createVolPathIntegrator(const PluginDesc& desc,
-                                                           const Camera* camera,
-                                                           const Bounds2i& pixelBounds,
-                                                           SceneDialect dialect);
-std::unique_ptr<SurfaceIntegrator> createWhittedIntegrator(const PluginDesc& desc,
-                                                           const Camera* camera,
-                                                           const Bounds2i& pixelBounds,
-                                                           SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createVolPathIntegrator(const PluginDesc& desc,
+                                                               const Camera* camera,
+                                                               const Bounds2i& pixelBounds,
+                                                               SceneDialect dialect);
+std::unique_ptr<PixelSampleIntegrator> createWhittedIntegrator(const PluginDesc& desc,
+                                                               const Camera* camera,
+                                                               const Bounds2i& pixelBounds,
+                                                               SceneDialect dialect);
 
 }  // namespace candela

@@ -25,7 +25,7 @@
 // --quick divides the sample counts (mutations, bootstrap, direct samples) by 4 (pbrt-v2's rule).
 #include "assembly/metropolis_params.h"
 
-#include "renderers/metropolis/metropolis_renderer.h"
+#include "integrators/metropolis/metropolis_integrator.h"
 
 namespace candela {
 
@@ -39,7 +39,7 @@ Float probability(const PluginDesc& desc, const char* name, Float def) {
   return desc.params.getOneFloat(name, def, ValueRange::within(0, 1), desc.loc);
 }
 
-const CameraImportance& importanceOf(const PluginDesc& desc, const ImageRendererContext& c) {
+const CameraImportance& importanceOf(const PluginDesc& desc, const WholeImageContext& c) {
   const CameraImportance* importance = c.camera ? c.camera->importance() : nullptr;
   if (!importance)
     throw SceneError(desc.loc, std::string("'")
@@ -50,14 +50,12 @@ const CameraImportance& importanceOf(const PluginDesc& desc, const ImageRenderer
   return *importance;
 }
 
-int quarterIfQuick(int n, const ImageRendererContext& c) {
-  return c.quick ? std::max(1, n / 4) : n;
-}
+int quarterIfQuick(int n, const WholeImageContext& c) { return c.quick ? std::max(1, n / 4) : n; }
 
 }  // namespace
 
-std::unique_ptr<ImageRenderer> createMltRenderer(const PluginDesc& desc,
-                                                 const ImageRendererContext& context) {
+std::unique_ptr<Integrator> createMltRenderer(const PluginDesc& desc,
+                                              const WholeImageContext& context) {
   MetropolisSettings s;
   s.maxDepth = atLeast(desc, "maxdepth", 5, 0);
   s.bootstrapSamples = quarterIfQuick(atLeast(desc, "bootstrapsamples", 100000, 1), context);
@@ -68,11 +66,11 @@ std::unique_ptr<ImageRenderer> createMltRenderer(const PluginDesc& desc,
   s.largeStepProbability = probability(desc, "largestepprobability", 0.3f);
   s.sigma = desc.params.getOneFloat("sigma", 0.01f, ValueRange::positive(), desc.loc);
   s.bidirectional = true;
-  return std::make_unique<MetropolisRenderer>(importanceOf(desc, context), s, context.seed);
+  return std::make_unique<MetropolisIntegrator>(importanceOf(desc, context), s, context.seed);
 }
 
-std::unique_ptr<ImageRenderer> createMetropolisRenderer(const PluginDesc& desc,
-                                                        const ImageRendererContext& context) {
+std::unique_ptr<Integrator> createMetropolisIntegrator(const PluginDesc& desc,
+                                                       const WholeImageContext& context) {
   MetropolisSettings s;
   s.maxDepth = atLeast(desc, "maxdepth", 7, 0);
   s.bootstrapSamples = quarterIfQuick(atLeast(desc, "bootstrapsamples", 100000, 1), context);
@@ -87,8 +85,8 @@ std::unique_ptr<ImageRenderer> createMetropolisRenderer(const PluginDesc& desc,
   bool direct = desc.params.getOneBool("dodirectseparately", true);
   int directSamples = quarterIfQuick(atLeast(desc, "directsamples", 4, 1), context);
   s.excludeDirect = direct;
-  return std::make_unique<MetropolisRenderer>(importanceOf(desc, context), s, context.seed,
-                                              direct ? directSamples : 0);
+  return std::make_unique<MetropolisIntegrator>(importanceOf(desc, context), s, context.seed,
+                                                direct ? directSamples : 0);
 }
 
 }  // namespace candela

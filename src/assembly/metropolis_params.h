@@ -8,10 +8,10 @@
 namespace candela {
 
 // pbrt-v3: Integrator "mlt".
-std::unique_ptr<ImageRenderer> createMltRenderer(const PluginDesc& integrator,
-                                                 const ImageRendererContext& context);
+std::unique_ptr<Integrator> createMltRenderer(const PluginDesc& integrator,
+                                              const WholeImageContext& context);
 // pbrt-v2: Renderer "metropolis".
-std::unique_ptr<ImageRenderer> createMetropolisRenderer(const PluginDesc& renderer,
-                                                        const ImageRendererContext& context);
+std::unique_ptr<Integrator> createMetropolisIntegrator(const PluginDesc& renderer,
+                                                       const WholeImageContext& context);
 
 }  // namespace candela

@@ -9,11 +9,11 @@
 #include "assembly/texture_factory.h"
 #include "cameras/camera.h"
 #include "integrators/integrator.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "lights/light.h"
 #include "materials/material.h"
 #include "parser/scene_description.h"
 #include "parser/scene_dialect.h"
-#include "renderers/image_renderer.h"
 #include "samplers/sampler.h"
 
 namespace candela {
@@ -30,27 +30,27 @@ std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* 
 // such an integrator with a camera that has no importance is a SceneError naming the camera.
 // pixelBounds: the film's, for images an integrator makes besides it. dialect: the scene's, for
 // the defaults of parameters whose pbrt-v3 default differs from pbrt-v2's behaviour.
-std::unique_ptr<SurfaceIntegrator> createSurfaceIntegrator(
+std::unique_ptr<PixelSampleIntegrator> createSurfaceIntegrator(
     const PluginDesc& desc, const Camera* camera = nullptr, const Bounds2i& pixelBounds = {},
     SceneDialect dialect = SceneDialect::PbrtV2);
 
-// What a whole-image renderer may take from the build.
-struct ImageRendererContext {
+// What a whole-image integrator may take from the build.
+struct WholeImageContext {
   const Camera* camera = nullptr;
   const Sampler* sampler = nullptr;  // its samples per pixel (after --spp and --quick)
   uint64_t seed = 0;
   bool quick = false;
-  int sppOverride = 0;   // --spp (0: none), for renderers whose sample count is a parameter
+  int sppOverride = 0;   // --spp (0: none), for integrators whose sample count is a parameter
   Bounds2i pixelBounds;  // the film's (crop window applied)
   std::function<void(const FileLoc&, const std::string&)> warn;  // may be empty
 };
 
-// The whole-image renderer that an Integrator statement (pbrt-v3: "sppm", "mlt") or a Renderer
-// statement (pbrt-v2: "metropolis") selects; null when the scene renders with the sampler
-// renderer and a surface integrator. renderer.name is empty when the scene has no Renderer
-// statement. Bad parameters are SceneErrors at their location.
-std::unique_ptr<ImageRenderer> createImageRenderer(const PluginDesc& integrator,
-                                                   const PluginDesc& renderer,
-                                                   const ImageRendererContext& context);
+// The whole-image integrator that an Integrator statement (pbrt-v3: "sppm", "mlt") or a Renderer
+// statement (pbrt-v2: "metropolis") selects; null when the scene renders with the pixel-sample
+// integrator of its SurfaceIntegrator or Integrator statement. renderer.name is empty when the
+// scene has no Renderer statement. Bad parameters are SceneErrors at their location.
+std::unique_ptr<Integrator> createWholeImageIntegrator(const PluginDesc& integrator,
+                                                       const PluginDesc& renderer,
+                                                       const WholeImageContext& context);
 
 }  // namespace candela

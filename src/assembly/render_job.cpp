@@ -13,9 +13,9 @@
 #include "assembly/plugin_factories.h"
 #include "assembly/shape_factory.h"
 #include "assembly/volume_factory.h"
+#include "integrators/tile_grid.h"
 #include "parser/scene_dialect.h"
 #include "parser/working_color_space.h"
-#include "renderers/tile_grid.h"
 #include "shapes/triangle_mesh.h"
 
 namespace candela {
@@ -181,7 +181,7 @@ void addShape(const ShapeDesc& sd, const Transform& objectToWorld, const char* n
 
 // pbrt-v3 media that nothing names, and media the integrator would ignore: never a silent
 // difference from what the scene asks for.
-void warnAboutNamedMedia(const NamedMedia& media, const PluginDesc& integrator, bool imageRenderer,
+void warnAboutNamedMedia(const NamedMedia& media, const PluginDesc& integrator, bool wholeImage,
                          const WarningSink& warn) {
   if (!warn) return;
   std::vector<const MediumDesc*> unused = media.unused();
@@ -190,7 +190,7 @@ void warnAboutNamedMedia(const NamedMedia& media, const PluginDesc& integrator, 
          "named medium '" + m->mediumName + "' is never used (no MediumInterface names it)");
   for (const MediumDesc& m : media.description().media)
     if (std::find(unused.begin(), unused.end(), &m) == unused.end()) reportUnused(m, warn);
-  if (!media.used() || (integrator.name == "volpath" && !imageRenderer)) return;
+  if (!media.used() || (integrator.name == "volpath" && !wholeImage)) return;
   const MediumDesc& first = *media.firstUsed();
   warn(first.loc, "integrator '" + integrator.name + "' ignores participating media: medium '" +
                       first.mediumName + "' (named by the MediumInterface at " +
@@ -352,41 +352,45 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
       !desc.integrator.name.empty()
           ? desc.integrator
           : orDefault(desc.surfaceIntegrator, v3 ? "path" : "directlighting");
-  ImageRendererContext irc{
-      job.camera.get(),    job.sampler.get(),       options.seed, options.quick,
-      options.sppOverride, job.film->pixelBounds(), warn};
-  job.imageRenderer = createImageRenderer(integratorDesc, desc.renderer, irc);
-  if (job.imageRenderer) {
+  WholeImageContext irc{job.camera.get(),    job.sampler.get(),       options.seed, options.quick,
+                        options.sppOverride, job.film->pixelBounds(), warn};
+  job.integrator = createWholeImageIntegrator(integratorDesc, desc.renderer, irc);
+  const bool wholeImage = job.integrator != nullptr;
+  if (wholeImage) {
     reportUnused(desc.renderer, warn);
     if (job.volume && warn)
       warn(desc.volumes.front().loc,
            "Volume regions are ignored by the '" +
                (desc.renderer.name.empty() ? integratorDesc.name : desc.renderer.name) +
-               "' renderer; only the sampler renderer renders them");
+               "' renderer; only pixel-sample integrators render them");
   } else {
     if (!desc.renderer.name.empty() && desc.renderer.name != "sampler" && warn)
       warn(desc.renderer.loc,
            "renderer '" + desc.renderer.name + "' is not available; using the sampler renderer");
-    job.integrator =
+    std::unique_ptr<PixelSampleIntegrator> pixels =
         createSurfaceIntegrator(integratorDesc, job.camera.get(), job.film->pixelBounds(), dialect);
-    // pbrt-v3's sampler integrators keep camera ray differentials at no less than 1/8; its
-    // bidirectional integrator, the one that splats light subpaths, scales them by 1/sqrt(spp)
-    // alone (pbrt 3e §16.3.1), as do its MLT and SPPM, candela's image renderers.
-    job.minDifferentialScale = v3 && !job.integrator->splats() ? Float(0.125) : 0;
-    if (job.volume && !job.integrator->attenuatesEveryRay() && warn)
+    // pbrt-v3's sampler integrators keep camera ray differentials at no less than 1/8, whose
+    // texture filter widths then stop shrinking past 64 samples per pixel; its bidirectional
+    // integrator, the one that splats light subpaths, scales them by 1/sqrt(spp) alone (pbrt 3e
+    // §16.3.1), as do its MLT and SPPM.
+    if (v3 && pixels->pixelLight() == PixelLight::OwnSamples)
+      pixels->setMinDifferentialScale(Float(0.125));
+    const VolumeRegionLight regions = pixels->volumeRegionLight();
+    if (job.volume && regions == VolumeRegionLight::CameraRayAndDirect && warn)
       warn(desc.volumes.front().loc,
            "Volume regions attenuate only the camera rays and direct lighting of integrator '" +
                integratorDesc.name +
                "'; its other rays (photons, gather and occlusion rays, light subpaths) cross them "
                "unattenuated "
                "(\"path\" or \"volpath\" carry the volume's full effect)");
-    if (job.integrator->rendersMedia() && job.volumeIntegrator) {
+    if (regions == VolumeRegionLight::Integrator && job.volumeIntegrator) {
       if (!desc.volumeIntegrator.name.empty() && warn)
         warn(desc.volumeIntegrator.loc, "VolumeIntegrator '" + desc.volumeIntegrator.name +
                                             "' is ignored: '" + integratorDesc.name +
                                             "' carries light through the Volume regions itself");
       job.volumeIntegrator.reset();
     }
+    job.integrator = std::move(pixels);
   }
   reportUnused(integratorDesc, warn);
 
@@ -420,7 +424,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
   sceneMedia.present = job.namedMedia->used();
   job.stats.namedMedia = job.namedMedia->createdCount();
   job.stats.mediumInterfaces = job.namedMedia->interfaceCount();
-  warnAboutNamedMedia(*job.namedMedia, integratorDesc, job.imageRenderer != nullptr, warn);
+  warnAboutNamedMedia(*job.namedMedia, integratorDesc, wholeImage, warn);
   job.scene->setMedia(std::move(sceneMedia));
   job.scene->setNeedsRayDifferentials(job.textures->texturesCreated() > 0);
   for (const auto& l : job.lights) l->preprocess(job.scene->worldBound());
@@ -443,39 +447,27 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
     pre.warn = [warn = options.warn, loc = integratorDesc.loc](const std::string& message) {
       warn(loc, message);
     };
-  if (job.integrator) {
-    auto start = std::chrono::steady_clock::now();
-    job.integrator->preprocess(*job.scene, pre);
-    job.preprocessSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
+  auto start = std::chrono::steady_clock::now();
+  job.integrator->preprocess(*job.scene, pre);
+  job.preprocessSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return job;
 }
 
 ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options) {
-  if (job.imageRenderer)
-    return job.imageRenderer->render(*job.scene, *job.camera, *job.film, options);
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator, job.volumeIntegrator.get(),
-                           job.minDifferentialScale);
-  ProgressiveResult result;
-  if (options.afterPass || options.timeBudget > 0) {
-    // The passes' clock starts after the preprocess; reports and the budget count it too.
-    ProgressiveOptions po = options;
-    po.timeBudget = std::max(0.0, options.timeBudget - job.preprocessSeconds);
-    if (options.timeBudget > 0 && po.timeBudget == 0) po.timeBudget = 1e-9;
-    if (options.afterPass)
-      po.afterPass = [&](const PassReport& pass) {
-        PassReport withPrepass = pass;
-        withPrepass.seconds += job.preprocessSeconds;
-        withPrepass.total.seconds += job.preprocessSeconds;
-        return options.afterPass(withPrepass);
-      };
-    result = renderProgressive(renderer, *job.scene, *job.film, job.sampler->samplesPerPixel(), po);
-  } else {
-    result.total = renderer.render(*job.scene, *job.film, options.render);
-    result.spp = job.sampler->samplesPerPixel();
-    result.passes = 1;
-  }
+  // The passes' clock starts after the preprocess; reports and the budget count it too.
+  ProgressiveOptions po = options;
+  po.timeBudget = std::max(0.0, options.timeBudget - job.preprocessSeconds);
+  if (options.timeBudget > 0 && po.timeBudget == 0) po.timeBudget = 1e-9;
+  if (options.afterPass)
+    po.afterPass = [&](const PassReport& pass) {
+      PassReport withPrepass = pass;
+      withPrepass.seconds += job.preprocessSeconds;
+      withPrepass.total.seconds += job.preprocessSeconds;
+      return options.afterPass(withPrepass);
+    };
+  RenderInputs in{*job.scene, *job.camera, *job.sampler, job.volumeIntegrator.get()};
+  ProgressiveResult result = job.integrator->render(in, *job.film, po);
   result.total.seconds += job.preprocessSeconds;
   return result;
 }

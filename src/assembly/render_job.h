@@ -19,15 +19,15 @@
 #include "core/compatibility.h"
 #include "film/film.h"
 #include "integrators/integrator.h"
-#include "integrators/volume_integrator.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "lights/light.h"
 #include "materials/material.h"
 #include "parser/scene_description.h"
-#include "renderers/image_renderer.h"
 #include "samplers/sampler.h"
 #include "scene/scene.h"
 #include "shapes/shape.h"
 #include "textures/noise.h"
+#include "transport/volume_integrator.h"
 
 namespace candela {
 
@@ -42,7 +42,7 @@ struct BuildOptions {
   uint64_t seed = 0;
   int sppOverride = 0;                 // 0: the sampler's own count
   std::optional<Bounds2f> cropWindow;  // NDC, overrides the film's
-  // --tile: render only tile tileIndex of a grid of tileCount tiles (renderers/tile_grid.h) over
+  // --tile: render only tile tileIndex of a grid of tileCount tiles (integrators/tile_grid.h) over
   // the pixels the film would render (its crop window's); tileCount 0 renders them all.
   int tileIndex = 0, tileCount = 0;
   bool quick = false;       // quarter resolution, an eighth of the samples
@@ -104,21 +104,16 @@ struct RenderJob {
   bool exrHalf = false;
   std::unique_ptr<Camera> camera;
   std::unique_ptr<Sampler> sampler;
-  // Exactly one of these is set: the surface integrator the sampler renderer runs, or a renderer
-  // of the whole image (Metropolis, SPPM) that replaces both.
-  std::unique_ptr<SurfaceIntegrator> integrator;
-  std::unique_ptr<ImageRenderer> imageRenderer;
+  // What renders the image: a pixel-sample integrator (path, bdpt, ...) or one of the whole
+  // image (SPPM, Metropolis).
+  std::unique_ptr<Integrator> integrator;
   // Wall time of the integrator's preprocess (photon maps, VPLs) at build: renderJob counts it as
   // render time, so that methods with and without a prepass compare by their whole cost.
   double preprocessSeconds = 0;
-  // The least scale of camera ray differentials (SamplerRenderer): pbrt-v3's 1/8 for its
-  // dialect, whose texture filter widths then stop shrinking past 64 samples per pixel.
-  Float minDifferentialScale = 0;
   BuildStats stats;
 };
 
-// Renders the job: with its image renderer when it has one, else with the sampler renderer and
-// its integrator; in doubling passes when options.afterPass or options.timeBudget is set.
+// Renders the job with its integrator (Integrator::render), the preprocess counted as render time.
 ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options);
 
 RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& options,

@@ -5,12 +5,12 @@
 #include <limits>
 #include <string>
 
-#include "renderers/sppm_renderer.h"
+#include "integrators/sppm/sppm_integrator.h"
 
 namespace candela {
 
-std::unique_ptr<ImageRenderer> createSppmRenderer(const PluginDesc& desc,
-                                                  const ImageRendererContext& context) {
+std::unique_ptr<Integrator> createSppmIntegrator(const PluginDesc& desc,
+                                                 const WholeImageContext& context) {
   const ParamSet& p = desc.params;
   SppmSettings s;
   s.iterations = p.getOneInt("numiterations", 64, ValueRange::atLeast(1), desc.loc);
@@ -28,7 +28,7 @@ std::unique_ptr<ImageRenderer> createSppmRenderer(const PluginDesc& desc,
   else if (context.quick)
     s.iterations = std::max(1, s.iterations / 16);
   s.seed = context.seed;
-  return std::make_unique<SppmRenderer>(s);
+  return std::make_unique<SppmIntegrator>(s);
 }
 
 }  // namespace candela

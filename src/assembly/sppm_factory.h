@@ -12,7 +12,7 @@ namespace candela {
 // radius, in scene units), "integer imagewritefrequency" (accepted and ignored: the progressive
 // passes and --error-log report the image as it converges). --spp replaces numiterations;
 // --quick divides it by 16 (pbrt-v3's rule). Bad values are SceneErrors at their location.
-std::unique_ptr<ImageRenderer> createSppmRenderer(const PluginDesc& integrator,
-                                                  const ImageRendererContext& context);
+std::unique_ptr<Integrator> createSppmIntegrator(const PluginDesc& integrator,
+                                                 const WholeImageContext& context);
 
 }  // namespace candela

@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
-#include "integrators/volume_integrator.h"
 #include "media/medium.h"
 #include "parser/scene_description.h"
+#include "transport/volume_integrator.h"
 
 namespace candela {
 

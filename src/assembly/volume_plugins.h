@@ -10,9 +10,9 @@
 #include <span>
 
 #include "core/plugin_spec.h"
-#include "integrators/volume_integrator.h"
 #include "media/medium.h"
 #include "parser/scene_description.h"
+#include "transport/volume_integrator.h"
 
 namespace candela {
 

@@ -10,11 +10,11 @@
 // the value (pbrt-v3 has no maxdist: its probes are unbounded).
 #pragma once
 
-#include "integrators/integrator.h"
+#include "integrators/pixel_sample_integrator.h"
 
 namespace candela {
 
-class AmbientOcclusionIntegrator : public SurfaceIntegrator {
+class AmbientOcclusionIntegrator : public PixelSampleIntegrator {
  public:
   enum class Estimate { ClearFraction, UnoccludedCosine };
   AmbientOcclusionIntegrator(int nSamples, Float maxDist, bool cosSample,

@@ -13,13 +13,13 @@
 #include "cameras/camera.h"
 #include "core/sampling.h"
 #include "filters/filter.h"
-#include "integrators/bdpt_vertex.h"
-#include "integrators/integrator.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "lights/light_sampler.h"
+#include "transport/bdpt_vertex.h"
 
 namespace candela {
 
-class BdptIntegrator : public SurfaceIntegrator {
+class BdptIntegrator : public PixelSampleIntegrator {
  public:
   // pbrt-v3's visualizestrategies (each strategy's own estimate, unweighted) and visualizeweights
   // (its MIS-weighted share): one image per (s, t), bdpt_dDD_sSS_tTT.exr.
@@ -34,7 +34,10 @@ class BdptIntegrator : public SurfaceIntegrator {
                  const Point3f& lightReference = Point3f(0, 0, 0));
   ~BdptIntegrator() override;
   void preprocess(const Scene& scene, const PreprocessOptions&) override;
-  bool splats() const override { return true; }
+  // Every pixel's samples, those outside the crop window too, with light subpaths splatted.
+  RenderResult renderSamples(const RenderInputs& in, Film& film,
+                             const RenderOptions& options) override;
+  PixelLight pixelLight() const override { return PixelLight::Splatted; }
   std::vector<NamedImage> extraImages(const Film& film) const override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;

@@ -1,10 +1,10 @@
 #include "integrators/dipole_subsurface.h"
 
 #include "accel/primitive.h"
-#include "integrators/light_sampling.h"
 #include "materials/material.h"
 #include "materials/subsurface_scattering.h"
 #include "reflection/fresnel.h"
+#include "transport/light_sampling.h"
 
 namespace candela {
 

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "integrators/specular_recursion.h"
-#include "integrators/subsurface_octree.h"
-#include "integrators/subsurface_points.h"
+#include "transport/subsurface_octree.h"
+#include "transport/subsurface_points.h"
 
 namespace candela {
 

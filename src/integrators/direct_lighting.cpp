@@ -1,6 +1,6 @@
 #include "integrators/direct_lighting.h"
 
-#include "integrators/light_sampling.h"
+#include "transport/light_sampling.h"
 
 namespace candela {
 

@@ -9,7 +9,7 @@ namespace candela {
 
 class DirectLightingIntegrator : public SpecularRecursionIntegrator {
  public:
-  bool attenuatesEveryRay() const override { return true; }
+  VolumeRegionLight volumeRegionLight() const override { return VolumeRegionLight::EveryRay; }
   enum class Strategy { All, One };
   DirectLightingIntegrator(Strategy strategy, int maxDepth)
       : SpecularRecursionIntegrator(maxDepth), strategy_(strategy) {}

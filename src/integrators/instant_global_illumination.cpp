@@ -5,9 +5,10 @@
 
 #include "accel/primitive.h"
 #include "core/rng.h"
-#include "integrators/light_sampling.h"
-#include "integrators/specular_differentials.h"
 #include "materials/material.h"
+#include "transport/light_sampling.h"
+#include "transport/scattering_surface.h"
+#include "transport/specular_differentials.h"
 
 namespace candela {
 
@@ -146,17 +147,7 @@ Spectrum InstantGlobalIlluminationIntegrator::compensateBound(const SurfaceInter
     ray.tMax = std::sqrt(cosHere / params_.gLimit);
     // Find the first surface that scatters, passing through those without a material.
     SurfaceInteraction hit;
-    bool found = false;
-    for (;;) {
-      Float tMax = ray.tMax;
-      if (!scene.intersect(ray, &hit, ctx.stats)) break;
-      if (hit.primitive->material) {
-        found = true;
-        break;
-      }
-      ray = continueThrough(hit, ray, tMax);
-    }
-    if (!found) continue;
+    if (!intersectScattering(scene, &ray, &hit, ctx.stats)) continue;
     Float g = cosHere * absDot(wi, hit.n) / distanceSquared(isect.p, hit.p);
     if (!(g > params_.gLimit) || std::isinf(g)) continue;
     Spectrum li = scatter(hit, ray, scene, ctx, set, depth + 1);

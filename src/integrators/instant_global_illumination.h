@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "integrators/integrator.h"
-#include "integrators/virtual_point_lights.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "reflection/bsdf.h"
+#include "transport/virtual_point_lights.h"
 
 namespace candela {
 
@@ -24,7 +24,7 @@ struct IgiParameters {
   int gatherSamples = 16;     // "gathersamples": compensation rays at the camera vertex
 };
 
-class InstantGlobalIlluminationIntegrator : public SurfaceIntegrator {
+class InstantGlobalIlluminationIntegrator : public PixelSampleIntegrator {
  public:
   explicit InstantGlobalIlluminationIntegrator(const IgiParameters& params) : params_(params) {}
   void preprocess(const Scene& scene, const PreprocessOptions&) override;

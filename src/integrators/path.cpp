@@ -2,10 +2,10 @@
 
 #include "accel/primitive.h"
 #include "core/sampling.h"
-#include "integrators/light_sampling.h"
-#include "integrators/specular_differentials.h"
-#include "integrators/volume_transmittance.h"
 #include "materials/material.h"
+#include "transport/light_sampling.h"
+#include "transport/specular_differentials.h"
+#include "transport/volume_transmittance.h"
 
 namespace candela {
 
@@ -19,6 +19,13 @@ Spectrum PathIntegrator::Li(const RayDifferential& ray, const Scene& scene, Inte
                             Float* alpha) const {
   Float hitDistance;
   return radiance(ray, scene, ctx, true, alpha, &hitDistance);
+}
+
+RenderResult PathIntegrator::renderSamples(const RenderInputs& in, Film& film,
+                                           const RenderOptions& options) {
+  SampleLoop loop = sampleLoop(in, film);
+  loop.firstHit = this;
+  return renderPixelSamples(in, film, options, loop);
 }
 
 Spectrum PathIntegrator::LiFromFirstHit(const RayDifferential& ray, SurfaceInteraction* hit,

@@ -15,7 +15,7 @@
 
 #include <memory>
 
-#include "integrators/integrator.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "lights/light_sampler.h"
 
 namespace candela {
@@ -28,9 +28,9 @@ struct PathSettings {
   LightSampleStrategy lightStrategy = LightSampleStrategy::Uniform;
 };
 
-class PathIntegrator : public SurfaceIntegrator {
+class PathIntegrator : public PixelSampleIntegrator, private FirstHitRadiance {
  public:
-  bool attenuatesEveryRay() const override { return true; }
+  VolumeRegionLight volumeRegionLight() const override { return VolumeRegionLight::EveryRay; }
   explicit PathIntegrator(int maxDepth, int rrStartDepth = 3)
       : PathIntegrator(PathSettings{maxDepth, rrStartDepth}) {}
   explicit PathIntegrator(const PathSettings& settings)
@@ -42,7 +42,9 @@ class PathIntegrator : public SurfaceIntegrator {
   void preprocess(const Scene& scene, const PreprocessOptions& options) override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
-  bool startsFromFirstHit() const override { return true; }
+  // Camera rays traced in groups, each path from its ray's hit (LiFromFirstHit).
+  RenderResult renderSamples(const RenderInputs& in, Film& film,
+                             const RenderOptions& options) override;
   Spectrum LiFromFirstHit(const RayDifferential& ray, SurfaceInteraction* hit, Float tHit,
                           const Scene& scene, IntegratorContext& ctx, Float* alpha) const override;
   // The radiance arriving along ray without the emission of what it meets first (a surface's Le

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/parallel_for.h"
-#include "integrators/light_sampling.h"
+#include "transport/light_sampling.h"
 
 namespace candela {
 

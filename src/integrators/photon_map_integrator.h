@@ -6,11 +6,11 @@
 // indirect map, read directly or through a final gather.
 #pragma once
 
-#include "integrators/final_gather.h"
-#include "integrators/photon_density.h"
-#include "integrators/photon_map.h"
-#include "integrators/photon_shooting.h"
 #include "integrators/specular_recursion.h"
+#include "transport/final_gather.h"
+#include "transport/photon_density.h"
+#include "transport/photon_map.h"
+#include "transport/photon_shooting.h"
 
 namespace candela {
 

@@ -1,9 +1,9 @@
 #include "integrators/specular_recursion.h"
 
 #include "accel/primitive.h"
-#include "integrators/specular_differentials.h"
-#include "integrators/volume_transmittance.h"
 #include "materials/material.h"
+#include "transport/specular_differentials.h"
+#include "transport/volume_transmittance.h"
 
 namespace candela {
 

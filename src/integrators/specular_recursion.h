@@ -6,12 +6,12 @@
 
 #include <functional>
 
-#include "integrators/integrator.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "reflection/bsdf.h"
 
 namespace candela {
 
-class SpecularRecursionIntegrator : public SurfaceIntegrator {
+class SpecularRecursionIntegrator : public PixelSampleIntegrator {
  public:
   explicit SpecularRecursionIntegrator(int maxDepth) : maxDepth_(maxDepth) {}
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,

@@ -3,10 +3,10 @@
 #include "accel/primitive.h"
 #include "core/rng.h"
 #include "core/sampling.h"
-#include "integrators/specular_differentials.h"
 #include "materials/material.h"
 #include "media/medium_interface.h"
 #include "media/tracking.h"
+#include "transport/specular_differentials.h"
 
 namespace candela {
 

@@ -19,12 +19,12 @@
 
 #include <memory>
 
-#include "integrators/integrator.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "lights/light_sampler.h"
 
 namespace candela {
 
-class VolPathIntegrator : public SurfaceIntegrator {
+class VolPathIntegrator : public PixelSampleIntegrator {
  public:
   // maxDepth: scattering events (surface or medium) at most; rrThreshold: Russian roulette
   // starts once the throughput's largest channel falls below it (pbrt-v3's defaults 5 and 1).
@@ -35,7 +35,7 @@ class VolPathIntegrator : public SurfaceIntegrator {
   void preprocess(const Scene& scene, const PreprocessOptions& options) override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
               Float* alpha) const override;
-  bool rendersMedia() const override { return true; }
+  VolumeRegionLight volumeRegionLight() const override { return VolumeRegionLight::Integrator; }
 
  private:
   int maxDepth_;

@@ -1,6 +1,6 @@
 #include "integrators/whitted.h"
 
-#include "integrators/volume_transmittance.h"
+#include "transport/volume_transmittance.h"
 
 namespace candela {
 

@@ -10,7 +10,7 @@ namespace candela {
 
 class WhittedIntegrator : public SpecularRecursionIntegrator {
  public:
-  bool attenuatesEveryRay() const override { return true; }
+  VolumeRegionLight volumeRegionLight() const override { return VolumeRegionLight::EveryRay; }
   explicit WhittedIntegrator(int maxDepth) : SpecularRecursionIntegrator(maxDepth) {}
 
  protected:

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "film/error_metrics.h"
-#include "renderers/progressive_render.h"
+#include "integrators/progressive_render.h"
 #include "support/render_scene.h"
 
 namespace candela {
@@ -45,7 +45,7 @@ test::RenderedScene buildBox(int spp, uint64_t seed) {
 test::RenderedScene renderOnePassJob(int spp, uint64_t seed) {
   auto built = buildBox(spp, seed);
   RenderJob& job = built.job();
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  test::PixelPasses renderer(job);
   renderer.render(*job.scene, *job.film, RenderOptions{0, 16, true});
   return built;
 }
@@ -74,7 +74,7 @@ TEST(Convergence, PathRelMseFallsAtTheUnbiasedRateAndTheIntervalCoversIt) {
   for (uint64_t seed : {1, 2, 3}) {
     auto built = buildBox(256, seed);
     RenderJob& job = built.job();
-    SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+    test::PixelPasses renderer(job);
     std::vector<double> logSpp, logErr;
     int passes = 0;
     ProgressiveOptions po;
@@ -92,7 +92,7 @@ TEST(Convergence, PathRelMseFallsAtTheUnbiasedRateAndTheIntervalCoversIt) {
                   m.relmse, predicted, m.relmseCi95);
       return true;
     };
-    ProgressiveResult r = renderProgressive(renderer, *job.scene, *job.film, 256, po);
+    ProgressiveResult r = renderProgressive(renderer.pass(*job.scene, *job.film), 256, po);
     EXPECT_EQ(r.spp, 256);
     EXPECT_EQ(r.reason, StopReason::Completed);
     ASSERT_EQ(passes, 7);  // 4, 8, ..., 256
@@ -118,11 +118,11 @@ TEST(Convergence, PassesGiveTheSameBitsAsOnePass) {
   ImageBuffer onePass = renderOnePass(48, 5);
   auto built = buildBox(48, 5);  // 1, 2, 4, ..., 32, then 48: an uneven last pass
   RenderJob& job = built.job();
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  test::PixelPasses renderer(job);
   ProgressiveOptions po;
   po.render.quiet = true;
   po.render.nThreads = 1;
-  ProgressiveResult r = renderProgressive(renderer, *job.scene, *job.film, 48, po);
+  ProgressiveResult r = renderProgressive(renderer.pass(*job.scene, *job.film), 48, po);
   EXPECT_EQ(r.passes, 7);
   ImageBuffer progressive = job.film->image();
   ASSERT_EQ(onePass.data.size(), progressive.data.size());
@@ -133,7 +133,7 @@ TEST(Convergence, PassesGiveTheSameBitsAsOnePass) {
 TEST(Convergence, TargetErrorFromVarianceStopsTheRender) {
   auto built = buildBox(1024, 3);
   RenderJob& job = built.job();
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  test::PixelPasses renderer(job);
   const double target = 2e-2;
   double last = 0;
   ProgressiveOptions po;
@@ -142,7 +142,7 @@ TEST(Convergence, TargetErrorFromVarianceStopsTheRender) {
     last = estimateFromVariance(*job.film).relmse;
     return last > target;
   };
-  ProgressiveResult r = renderProgressive(renderer, *job.scene, *job.film, 1024, po);
+  ProgressiveResult r = renderProgressive(renderer.pass(*job.scene, *job.film), 1024, po);
   EXPECT_EQ(r.reason, StopReason::TargetError);
   EXPECT_LT(r.spp, 1024);
   EXPECT_LE(last, target);
@@ -151,11 +151,11 @@ TEST(Convergence, TargetErrorFromVarianceStopsTheRender) {
 TEST(Convergence, TimeBudgetStopsAfterThePassThatWouldOverrun) {
   auto built = buildBox(1024, 3);
   RenderJob& job = built.job();
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  test::PixelPasses renderer(job);
   ProgressiveOptions po;
   po.render.quiet = true;
   po.timeBudget = 1e-9;  // the first pass always runs; no second one fits
-  ProgressiveResult r = renderProgressive(renderer, *job.scene, *job.film, 1024, po);
+  ProgressiveResult r = renderProgressive(renderer.pass(*job.scene, *job.film), 1024, po);
   EXPECT_EQ(r.reason, StopReason::TimeBudget);
   EXPECT_EQ(r.spp, 1);
   EXPECT_EQ(r.passes, 1);

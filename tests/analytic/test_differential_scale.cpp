@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "renderers/sampler_renderer.h"
+#include "integrators/pixel_sample_integrator.h"
 #include "support/render_scene.h"
 
 using namespace candela;
@@ -19,9 +19,14 @@ namespace {
 
 // Renders the distance between each camera ray's direction and its x offset ray's: the scale
 // the renderer gave the differentials, times the camera's one-pixel step.
-class DifferentialProbe : public SurfaceIntegrator {
+class DifferentialProbe : public PixelSampleIntegrator {
  public:
-  bool needsRayDifferentials() const override { return true; }
+  RenderResult renderSamples(const RenderInputs& in, Film& film,
+                             const RenderOptions& options) override {
+    SampleLoop loop = sampleLoop(in, film);
+    loop.rayDifferentials = true;  // whatever the scene's textures
+    return renderPixelSamples(in, film, options, loop);
+  }
   Spectrum Li(const RayDifferential& ray, const Scene&, IntegratorContext&,
               Float* alpha) const override {
     *alpha = 1;
@@ -43,8 +48,9 @@ double meanOffset(const char* integratorStatement, int spp, Float minScale) {
   test::RenderedScene r = test::buildSceneText(scene(integratorStatement, spp));
   RenderJob& job = r.job();
   DifferentialProbe probe;
-  SamplerRenderer renderer(*job.camera, *job.sampler, probe, nullptr, minScale);
-  renderer.render(*job.scene, *job.film, RenderOptions{1, 16, true});
+  probe.setMinDifferentialScale(minScale);
+  probe.renderSamples({*job.scene, *job.camera, *job.sampler}, *job.film,
+                      RenderOptions{1, 16, true});
   std::vector<Spectrum> pixels = test::pixelValues(*job.film);
   double sum = 0;
   for (const Spectrum& v : pixels) sum += v[0];
@@ -66,18 +72,23 @@ TEST(DifferentialScale, IsOneOverTheRootOfTheSampleCountAndNoLessThanTheFloor) {
   EXPECT_NEAR(floored / meanOffset(v2, 64, 0), 1.0, 1e-4);
 }
 
+// The floor the build gave the job's pixel-sample integrator.
+Float floorOf(test::RenderedScene& r) {
+  return dynamic_cast<const PixelSampleIntegrator&>(*r.job().integrator).minDifferentialScale();
+}
+
 TEST(DifferentialScale, TheFloorIsPbrtV3sSamplerIntegratorsOnly) {
   test::RenderedScene v2 = test::buildSceneText(scene("SurfaceIntegrator \"path\"", 4));
-  EXPECT_EQ(v2.job().minDifferentialScale, 0);
+  EXPECT_EQ(floorOf(v2), 0);
   test::RenderedScene v3 = test::buildSceneText(scene("Integrator \"path\"", 4));
-  EXPECT_EQ(v3.job().minDifferentialScale, Float(0.125));
+  EXPECT_EQ(floorOf(v3), Float(0.125));
   // pbrt-v3's BDPT has no floor: 1/sqrt(spp) alone.
   test::RenderedScene bdpt = test::buildSceneText(scene("Integrator \"bdpt\"", 4));
-  EXPECT_EQ(bdpt.job().minDifferentialScale, 0);
+  EXPECT_EQ(floorOf(bdpt), 0);
   BuildOptions asV2;
   asV2.compatibility.dialect = SceneDialect::PbrtV2;
   test::RenderedScene forced = test::buildSceneText(scene("Integrator \"path\"", 4), asV2);
-  EXPECT_EQ(forced.job().minDifferentialScale, 0);
+  EXPECT_EQ(floorOf(forced), 0);
 }
 
 namespace {

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <string>
 
-#include "integrators/photon_density.h"
 #include "integrators/photon_map_integrator.h"
 #include "support/render_scene.h"
+#include "transport/photon_density.h"
 
 namespace candela {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 
 #include "accel/primitive.h"
-#include "integrators/specular_differentials.h"
 #include "shapes/sphere.h"
 #include "support/render_scene.h"
+#include "transport/specular_differentials.h"
 
 namespace candela {
 namespace {
@@ -223,7 +223,7 @@ test::RenderedScene renderChecker(bool withQuad, const char* aaMode, const char*
     }
   }
   EXPECT_EQ(cleared, withQuad ? 2 : 0);
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  test::PixelPasses renderer(job);
   r.results.push_back(renderer.render(*job.scene, *job.film, RenderOptions{0, 16, true}));
   return r;
 }

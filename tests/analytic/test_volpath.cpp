@@ -229,7 +229,7 @@ TEST(VolPathFurnace, SceneVolumeFillsTheScene) {
   Scene withVolume(job.aggregate.get(), job.scene->lights(), &volume);
   // The sky's shadow rays must end beyond the volume: the lights see the scene's new bounds.
   for (const auto& light : job.lights) light->preprocess(withVolume.worldBound());
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  test::PixelPasses renderer(job);
   renderer.render(withVolume, *job.film, RenderOptions{0, 16, true});
   expectFilmIsTheSky(*job.film, true);
 }

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "core/error.h"
-#include "integrators/specular_differentials.h"
 #include "support/render_scene.h"
+#include "transport/specular_differentials.h"
 
 namespace candela {
 namespace {

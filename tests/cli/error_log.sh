@@ -22,7 +22,7 @@ head -1 log.csv | grep -qx 'seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95'
 grep -q "estimated from variance" t.txt || { echo "FAIL: no estimate"; cat t.txt; exit 1; }
 grep -a -q "target error" t.exr || { echo "FAIL: stop reason not in EXR"; exit 1; }
 grep -a -q "candela:targetError" t.exr || { echo "FAIL: target not in EXR"; exit 1; }
-# SPPM (an ImageRenderer) logs after 1, 2, 4 iterations and the last; --spp sets the iterations,
+# SPPM (a whole-image integrator) logs after 1, 2, 4 iterations and the last; --spp sets the iterations,
 # --stats reports them, and the error against a 64-iteration render of another seed falls.
 sed 's/^SurfaceIntegrator .*/SurfaceIntegrator "sppm" "float radius" [8]/' "$scene" > sppm.pbrt
 "$candela" sppm.pbrt --quick --spp 64 --seed 9 -o sppm-ref.exr --preview none -q

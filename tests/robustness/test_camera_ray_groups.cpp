@@ -63,7 +63,7 @@ Render render(const std::string& text, std::optional<bool> wrapGrouped, int thre
   Scene scene(wrapper ? &*wrapper : job.aggregate.get(), job.scene->lights(), job.scene->volume());
   scene.setNeedsRayDifferentials(job.scene->needsRayDifferentials());
   scene.setMedia(job.scene->media());
-  SamplerRenderer renderer(*job.camera, *job.sampler, *job.integrator);
+  test::PixelPasses renderer(job);
   for (auto [first, end] : ranges) {
     RenderOptions o{threads, tile, true};
     o.firstSample = first;

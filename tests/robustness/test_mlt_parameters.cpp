@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "integrators/metropolis/metropolis_integrator.h"
 #include "support/parameter_errors.h"
 #include "support/render_scene.h"
 
@@ -59,7 +60,7 @@ TEST(MetropolisParameters, RendererIsAvailable) {
   std::string warnings;
   options.warn = [&](const FileLoc&, const std::string& m) { warnings += m + "\n"; };
   test::RenderedScene r = test::buildSceneText(sceneWith("Renderer \"metropolis\"", ""), options);
-  EXPECT_TRUE(r.job().imageRenderer != nullptr);
+  EXPECT_TRUE(dynamic_cast<const MetropolisIntegrator*>(r.job().integrator.get()) != nullptr);
   EXPECT_EQ(warnings.find("not available"), std::string::npos) << warnings;
 }
 

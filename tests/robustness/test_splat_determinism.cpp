@@ -14,10 +14,20 @@
 namespace candela {
 namespace {
 
-class RandomSplatter : public SurfaceIntegrator {
+class RandomSplatter : public PixelSampleIntegrator {
  public:
   explicit RandomSplatter(Point2i res) : res_(res) {}
-  bool splats() const override { return true; }
+  PixelLight pixelLight() const override { return PixelLight::Splatted; }
+  // As bdpt: every pixel of the full image takes its samples, their splats landing anywhere.
+  RenderResult renderSamples(const RenderInputs& in, Film& film,
+                             const RenderOptions& options) override {
+    SampleLoop loop = sampleLoop(in, film);
+    loop.splats = &film.enableSplats(film.filterSupportArea());
+    loop.pixels = Bounds2i(Point2i(0, 0), film.fullResolution());
+    RenderResult result = renderPixelSamples(in, film, options, loop);
+    film.addLightPaths(result.samples);
+    return result;
+  }
   Spectrum Li(const RayDifferential&, const Scene&, IntegratorContext& ctx,
               Float* alpha) const override {
     *alpha = 1;
@@ -48,12 +58,11 @@ ImageBuffer render(int threads, int tile, std::optional<Bounds2f> crop = std::nu
   build.cropWindow = crop;
   test::RenderedScene r = test::buildSceneText(kScene, build);
   RandomSplatter integrator(r.job().film->fullResolution());
-  SamplerRenderer renderer(*r.job().camera, *r.job().sampler, integrator);
   RenderOptions ro;
   ro.nThreads = threads;
   ro.tileSize = tile;
   ro.quiet = true;
-  renderer.render(*r.job().scene, *r.job().film, ro);
+  integrator.renderSamples({*r.job().scene, *r.job().camera, *r.job().sampler}, *r.job().film, ro);
   EXPECT_EQ(r.job().film->splats()->refused(), 0u);
   return r.job().film->image();
 }

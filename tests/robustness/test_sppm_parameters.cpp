@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "renderers/sppm_renderer.h"
+#include "integrators/sppm/sppm_integrator.h"
 #include "support/parameter_errors.h"
 #include "support/render_scene.h"
 
@@ -24,8 +24,8 @@ TEST(SppmParameters, EveryBadValueIsALocatedSceneError) {
        "\"integer photonsperiteration\" [-2]"});
 }
 
-const SppmRenderer& sppmOf(test::RenderedScene& built) {
-  auto* r = dynamic_cast<const SppmRenderer*>(built.job().imageRenderer.get());
+const SppmIntegrator& sppmOf(test::RenderedScene& built) {
+  auto* r = dynamic_cast<const SppmIntegrator*>(built.job().integrator.get());
   if (!r) throw std::runtime_error("not an SPPM renderer");
   return *r;
 }

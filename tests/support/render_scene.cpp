@@ -92,4 +92,18 @@ RenderedScene buildSceneText(const std::string& text, const BuildOptions& option
   return run(text, options, nullptr);
 }
 
+PixelPasses::PixelPasses(RenderJob& job)
+    : job_(job), integrator_(dynamic_cast<PixelSampleIntegrator*>(job.integrator.get())) {
+  if (!integrator_) throw std::logic_error("PixelPasses: the job's integrator renders no samples");
+}
+
+RenderResult PixelPasses::render(const Scene& scene, Film& film,
+                                 const RenderOptions& options) const {
+  return integrator_->renderSamples({scene, *job_.camera, *job_.sampler}, film, options);
+}
+
+RenderPass PixelPasses::pass(const Scene& scene, Film& film) const {
+  return [this, &scene, &film](const RenderOptions& o) { return render(scene, film, o); };
+}
+
 }  // namespace candela::test

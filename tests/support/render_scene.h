@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "assembly/render_job.h"
-#include "renderers/sampler_renderer.h"
+#include "integrators/pixel_sample_integrator.h"
+#include "integrators/progressive_render.h"
 
 namespace candela::test {
 
@@ -40,5 +41,18 @@ RenderedScene buildSceneText(const std::string& text, const BuildOptions& option
 
 // The film's pixel values, row by row.
 std::vector<Spectrum> pixelValues(const Film& film);
+
+// Sample ranges rendered by hand with a job's pixel-sample integrator (its camera and sampler, no
+// Volume regions' integrator), into any scene and film: for tests that take passes themselves.
+class PixelPasses {
+ public:
+  explicit PixelPasses(RenderJob& job);  // fails the test unless the job's is one
+  RenderResult render(const Scene& scene, Film& film, const RenderOptions& options) const;
+  RenderPass pass(const Scene& scene, Film& film) const;
+
+ private:
+  RenderJob& job_;
+  PixelSampleIntegrator* integrator_;
+};
 
 }  // namespace candela::test

@@ -9,9 +9,9 @@
 #include "accel/primitive.h"
 #include "core/rng.h"
 #include "core/sampling.h"
-#include "integrators/final_gather.h"
 #include "materials/material.h"
 #include "support/render_scene.h"
+#include "transport/final_gather.h"
 
 namespace candela {
 namespace {

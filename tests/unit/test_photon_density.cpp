@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "core/rng.h"
-#include "integrators/photon_density.h"
 #include "reflection/point_kdtree.h"
+#include "transport/photon_density.h"
 
 namespace candela {
 namespace {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "renderers/metropolis/primary_samples.h"
+#include "integrators/metropolis/primary_samples.h"
 #include "support/tail_probabilities.h"
 
 namespace candela {

@@ -7,10 +7,10 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "integrators/dipole_subsurface.h"
-#include "integrators/subsurface_points.h"
 #include "materials/measured_subsurface.h"
 #include "materials/subsurface_scattering.h"
 #include "support/parameter_errors.h"
+#include "transport/subsurface_points.h"
 
 namespace candela {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "film/film.h"
-#include "renderers/tile_grid.h"
+#include "integrators/tile_grid.h"
 
 namespace candela {
 namespace {

@@ -5,11 +5,12 @@
 #include <cmath>
 #include <sstream>
 
+#include "accel/embree/embree_device.h"
 #include "film/film.h"
 #include "integrators/irradiance/irradiance_interpolation.h"
 #include "integrators/irradiance/irradiance_prepass.h"
-#include "integrators/light_sampling.h"
 #include "samplers/zero_two_sequence.h"
+#include "transport/light_sampling.h"
 
 namespace candela {
 
@@ -60,6 +61,21 @@ void IrradianceCacheIntegrator::preprocess(const Scene&, const PreprocessOptions
   quickApplied_ = true;
   settings_.nSamples = std::max(1, settings_.nSamples / 16);
   settings_.nFilter = std::min(settings_.nFilter, settings_.nSamples - 1);
+}
+
+RenderResult IrradianceCacheIntegrator::renderSamples(const RenderInputs& in, Film& film,
+                                                      const RenderOptions& options) {
+  auto start = std::chrono::steady_clock::now();
+  RayStats prepassRays = prepare(in.scene, in.camera, in.sampler, film,
+                                 {options.nThreads, options.quiet, enableFlushToZero});
+  const double prepassSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  SampleLoop loop = sampleLoop(in, film);
+  loop.rayDifferentials = true;
+  RenderResult result = renderPixelSamples(in, film, options, loop);
+  result.rays += prepassRays;
+  result.seconds += prepassSeconds;
+  return result;
 }
 
 RayStats IrradianceCacheIntegrator::prepare(const Scene& scene, const Camera& camera,

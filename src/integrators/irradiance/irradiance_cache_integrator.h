@@ -21,6 +21,7 @@
 #include "integrators/irradiance/irradiance_cache_settings.h"
 #include "integrators/irradiance/irradiance_estimate.h"
 #include "integrators/irradiance/irradiance_octree.h"
+#include "integrators/irradiance/irradiance_prepass.h"
 #include "integrators/specular_recursion.h"
 
 namespace candela {
@@ -31,10 +32,11 @@ class IrradianceCacheIntegrator : public SpecularRecursionIntegrator {
   ~IrradianceCacheIntegrator() override;
   // --quick: a sixteenth of the hemisphere samples of every estimate (pbrt-v2's rule).
   void preprocess(const Scene& scene, const PreprocessOptions& options) override;
-  RayStats prepare(const Scene& scene, const Camera& camera, const Sampler& sampler,
-                   const Film& film, const PrepassOptions& options) override;
+  // The first render fills the cache (prepare), then every render reads it, its camera rays
+  // with differentials whatever the textures (the cache spaces its samples by their footprint).
+  RenderResult renderSamples(const RenderInputs& in, Film& film,
+                             const RenderOptions& options) override;
   std::string statsReport() const override;
-  bool needsRayDifferentials() const override { return true; }  // the pixel spacing
   const IrradianceCacheSettings& settings() const { return settings_; }
   // The cache prepare() built; null before it, and when maxerror is 0.
   const IrradianceOctree* cache() const { return cache_.get(); }
@@ -46,6 +48,11 @@ class IrradianceCacheIntegrator : public SpecularRecursionIntegrator {
                        IntegratorContext& ctx) const override;
 
  private:
+  // Fills the cache once, before the first pixel of the first render; what it builds is a
+  // function of (scene, camera, film resolution, sampler seed) only, never of threads, crop
+  // window or order of completion. Returns the rays it traced.
+  RayStats prepare(const Scene& scene, const Camera& camera, const Sampler& sampler,
+                   const Film& film, const PrepassOptions& options);
   // The query of one hemisphere at isect: the geometric normal turned to wo's side (reflection)
   // or away from it (transmission), as pbrt 2e orients it.
   IrradianceQuery query(const SurfaceInteraction& isect, bool transmission) const;

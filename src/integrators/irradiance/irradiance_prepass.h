@@ -18,6 +18,14 @@
 
 namespace candela {
 
+// How the prepass runs: threads (0: all cores), whether to show progress, and what every thread
+// that traces rays must call first (the render's floating-point mode; empty: none).
+struct PrepassOptions {
+  int nThreads = 0;
+  bool quiet = true;
+  std::function<void()> setUpThread;
+};
+
 struct PrepassPlan {
   Point2i resolution;  // the film's full resolution
   int firstStep = 8;   // pixels between the first grid's points; halved each round down to 1
