@@ -92,8 +92,8 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
     inputs.push_back(path);
     const ColorManagement& cm = writer.colorManagement();
     std::string from = colorSpace;
-    if (from == TextureFactory::kSrgbEncoded) from = defaultTextureColorSpace(true, cm);
-    if (from == TextureFactory::kStoredLinear) from = defaultTextureColorSpace(false, cm);
+    if (from == kSrgbEncoded) from = defaultTextureColorSpace(true, cm);
+    if (from == kStoredLinear) from = defaultTextureColorSpace(false, cm);
     return loadTextureImage(path, from, cm, writer.workingSpace());
   };
   if (!cli.quiet) build.warn = printWarning;

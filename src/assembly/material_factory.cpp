@@ -10,52 +10,9 @@
 #include "materials/matte.h"
 #include "materials/measured.h"
 #include "parser/spectrum_input.h"
-#include "textures/solid_textures.h"
+#include "textures/bump_map_plugins.h"
 
 namespace candela {
-
-namespace {
-
-// Height fields of lrt's BumpMap statement (lrt draft Appendix C), scaled by "scale".
-class ScaledFloatTexture : public Texture<Float> {
- public:
-  ScaledFloatTexture(std::unique_ptr<Texture<Float>> t, Float s) : t_(std::move(t)), s_(s) {}
-  Float evaluate(const SurfaceInteraction& si) const override { return s_ * t_->evaluate(si); }
-
- private:
-  std::unique_ptr<Texture<Float>> t_;
-  Float s_;
-};
-
-constexpr ParamSpec kWindyBump[] = {
-    {"scale", "float", "1", "", "", kLrt, "height scale"},
-    {"stretch", "float", "1", "", "positive and finite", kLrt, "feature size"}};
-constexpr ParamSpec kBumpyBump[] = {
-    {"scale", "float", "1", "", "", kLrt, "height scale"},
-    {"octaves", "integer", "6", "", "", kLrt, "noise octaves"},
-    {"omega", "float", "0.5", "", "", kLrt, "amplitude falloff per octave"}};
-
-std::unique_ptr<Texture<Float>> createWindyBump(const ParamSet& p, const FileLoc& loc) {
-  Float stretch = p.getOneFloat("stretch", 1, ValueRange::positive(), loc);
-  return std::make_unique<WindyTexture<Float>>(TextureMapping3D(scale(stretch, stretch, stretch)));
-}
-
-std::unique_ptr<Texture<Float>> createBumpyBump(const ParamSet& p, const FileLoc&) {
-  return std::make_unique<FBmTexture<Float>>(
-      TextureMapping3D(Transform()), p.getOneInt("octaves", 6), p.getOneFloat("omega", 0.5f));
-}
-
-constexpr BumpMapPlugin kBumpMaps[] = {
-    {{"bump map", "windy", kLrt, "wind-rippled height field (lrt draft Appendix C)", kWindyBump},
-     createWindyBump},
-    {{"bump map", "bumpy", kLrt, "fractal Brownian motion height field (lrt draft Appendix C)",
-      kBumpyBump},
-     createBumpyBump},
-};
-
-}  // namespace
-
-std::span<const BumpMapPlugin> bumpMapPlugins() { return kBumpMaps; }
 
 // One material statement as its create function sees it.
 class MaterialFactory::StatementInputs : public MaterialInputs {
@@ -176,14 +133,12 @@ const Texture<Float>* MaterialFactory::bumpMap(const MaterialDesc& d) {
   if (d.params.find("bumpmap")) return textures_.scalar(d, "bumpmap", 0);
   if (!d.bumpMap) return nullptr;
   const PluginDesc& b = *d.bumpMap;
-  Float s = b.params.getOneFloat("scale", 1);
   if (b.name == "imagemap")
     throw SceneError(b.loc,
                      "BumpMap \"imagemap\" is not supported; define a float imagemap Texture and "
                      "give the material \"texture bumpmap\"");
   const BumpMapPlugin& plugin = requirePlugin(bumpMapPlugins(), "bump map", b.name, b.loc);
-  std::unique_ptr<Texture<Float>> t = plugin.create(b.params, b.loc);
-  bumpTextures_.push_back(std::make_unique<ScaledFloatTexture>(std::move(t), s));
+  bumpTextures_.push_back(plugin.create(b.params, b.loc));
   return bumpTextures_.back().get();
 }
 

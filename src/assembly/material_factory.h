@@ -2,8 +2,8 @@
 // (docs/architecture.md, data flow step 2), through the table of materials/material_plugins.h
 // (names, parameters, defaults and rules: `candela --list-plugins material`, `--describe NAME`).
 // In a pbrt-v3 scene (parser/scene_dialect.h) metal, plastic, substrate, uber, translucent and
-// glass take pbrt-v3's microfacet models; lrt's BumpMap statement (bumpMapPlugins) bumps the
-// material in effect, a "bumpmap" float texture the material that names it.
+// glass take pbrt-v3's microfacet models; lrt's BumpMap statement (textures/bump_map_plugins.h)
+// bumps the material in effect, a "bumpmap" float texture the material that names it.
 //
 // mix resolves its names through the MakeNamedMaterial definitions in effect at its statement
 // (MaterialDesc::namedMaterials; pbrt-v3 scopes them by AttributeBegin/End); a mix that reaches
@@ -30,13 +30,6 @@
 #include "reflection/merl_brdf.h"
 
 namespace candela {
-
-// lrt's BumpMap statement's height fields ("windy", "bumpy"), each scaled by "scale".
-struct BumpMapPlugin {
-  PluginSpec spec;
-  std::unique_ptr<Texture<Float>> (*create)(const ParamSet& params, const FileLoc& loc);
-};
-std::span<const BumpMapPlugin> bumpMapPlugins();
 
 class MaterialFactory {
  public:

@@ -22,8 +22,7 @@ namespace candela {
 std::unique_ptr<Material> createDefaultMaterial(TextureFactory& textures);
 
 // Light maps ("mapname") are read through loadImage; without one they are an error.
-std::unique_ptr<Light> createLight(const LightDesc& desc,
-                                   const TextureFactory::ImageLoader& loadImage = {});
+std::unique_ptr<Light> createLight(const LightDesc& desc, const ImageLoader& loadImage = {});
 std::unique_ptr<AreaLight> createAreaLight(const PluginDesc& desc, const Shape* shape);
 
 // camera: the scene's, for integrators that connect light paths to it ("bidirectional"/"bdpt");
@@ -42,7 +41,6 @@ struct WholeImageContext {
   bool quick = false;
   int sppOverride = 0;   // --spp (0: none), for integrators whose sample count is a parameter
   Bounds2i pixelBounds;  // the film's (crop window applied)
-  std::function<void(const FileLoc&, const std::string&)> warn;  // may be empty
 };
 
 // The whole-image integrator that an Integrator statement (pbrt-v3: "sppm", "mlt") or a Renderer

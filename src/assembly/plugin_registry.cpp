@@ -3,17 +3,18 @@
 #include <algorithm>
 
 #include "accel/accelerator_plugins.h"
-#include "assembly/integrator_plugins.h"
-#include "assembly/light_plugins.h"
-#include "assembly/material_factory.h"
-#include "assembly/texture_plugins.h"
-#include "assembly/volume_plugins.h"
 #include "cameras/camera_plugins.h"
 #include "film/film_plugins.h"
 #include "filters/filter_plugins.h"
+#include "integrators/integrator_plugins.h"
+#include "lights/light_plugins.h"
 #include "materials/material_plugins.h"
+#include "media/medium_plugins.h"
 #include "samplers/sampler_plugins.h"
 #include "shapes/shape_plugins.h"
+#include "textures/bump_map_plugins.h"
+#include "textures/texture_plugins.h"
+#include "transport/volume_integrator_plugins.h"
 
 namespace candela {
 

@@ -352,8 +352,8 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
       !desc.integrator.name.empty()
           ? desc.integrator
           : orDefault(desc.surfaceIntegrator, v3 ? "path" : "directlighting");
-  WholeImageContext irc{job.camera.get(),    job.sampler.get(),       options.seed, options.quick,
-                        options.sppOverride, job.film->pixelBounds(), warn};
+  WholeImageContext irc{job.camera.get(), job.sampler.get(),   options.seed,
+                        options.quick,    options.sppOverride, job.film->pixelBounds()};
   job.integrator = createWholeImageIntegrator(integratorDesc, desc.renderer, irc);
   const bool wholeImage = job.integrator != nullptr;
   if (wholeImage) {

@@ -3,9 +3,10 @@
 #include <filesystem>
 #include <type_traits>
 
-#include "assembly/texture_plugins.h"
 #include "textures/basic_textures.h"
 #include "textures/image_texture.h"
+#include "textures/texture_inputs.h"
+#include "textures/texture_plugins.h"
 
 namespace candela {
 
@@ -133,61 +134,84 @@ const Texture<T>* TextureFactory::named(size_t index) {
   return s.byIndex[index] = s.owned.back().get();
 }
 
+// One Texture statement as its class's create function reads it.
+class TextureFactory::Inputs final : public TextureInputs {
+ public:
+  Inputs(TextureFactory& factory, const TextureDesc& desc, size_t index)
+      : factory_(factory), desc_(desc), index_(index) {}
+  const ParamSet& params() const override { return desc_.params; }
+  const FileLoc& location() const override { return desc_.loc; }
+  const std::string& textureName() const override { return desc_.textureName; }
+  const Transform& textureToWorld() const override { return desc_.textureToWorld; }
+  ClampedOctaves clampedOctaves() const override { return factory_.clampedOctaves_; }
+  // A named texture in effect at the statement (without bindings: defined before this texture).
+  const Texture<Spectrum>* spectrum(const std::string& name, const Spectrum& def) override {
+    return parameter<Spectrum>(name, def);
+  }
+  const Texture<Float>* scalar(const std::string& name, Float def) override {
+    return parameter<Float>(name, def);
+  }
+  std::shared_ptr<const MIPMap<Float>> floatMipmap(const std::string& path,
+                                                   const std::string& colorSpace, WrapMode wrap,
+                                                   Float scale, Float gamma) override {
+    return factory_.mipmap<Float>(path, colorSpace, wrap, scale, gamma, desc_);
+  }
+  std::shared_ptr<const MIPMap<Spectrum>> spectrumMipmap(const std::string& path,
+                                                         const std::string& colorSpace,
+                                                         WrapMode wrap, Float scale,
+                                                         Float gamma) override {
+    return factory_.mipmap<Spectrum>(path, colorSpace, wrap, scale, gamma, desc_);
+  }
+
+ private:
+  template <typename T>
+  const Texture<T>* parameter(const std::string& name, const T& def) {
+    const TextureBindings* bindings = desc_.textures ? &*desc_.textures : nullptr;
+    return factory_.parameter<T>(desc_.params, name, def, desc_.loc, index_, bindings);
+  }
+  TextureFactory& factory_;
+  const TextureDesc& desc_;
+  size_t index_;  // of desc_ in the factory's descriptions
+};
+
 template <typename T>
 std::unique_ptr<Texture<T>> TextureFactory::create(const TextureDesc& d, size_t index) {
   const TexturePlugin& plugin = requirePlugin(texturePlugins(), "texture", d.name, d.loc);
-  Context context(*this, d, index);
+  Inputs inputs(*this, d, index);
   if constexpr (std::is_same_v<T, Float>) {
     if (!plugin.createFloat) otherTypeOnly(d, "spectrum", "float");
-    return plugin.createFloat(context);
+    return plugin.createFloat(inputs);
   } else {
     if (!plugin.createSpectrum) otherTypeOnly(d, "float", "spectrum");
-    return plugin.createSpectrum(context);
+    return plugin.createSpectrum(inputs);
   }
 }
 
 template <typename T>
-const Texture<T>* TextureFactory::Context::texture(const std::string& name, const T& def) {
-  const TextureBindings* bindings = desc_.textures ? &*desc_.textures : nullptr;
-  return factory_.parameter<T>(desc_.params, name, def, desc_.loc, index_, bindings);
-}
-
-template <typename T>
-std::shared_ptr<const MIPMap<T>> TextureFactory::Context::mipmap(const std::string& path,
-                                                                 const std::string& colorSpace,
-                                                                 WrapMode wrap, Float scale,
-                                                                 Float gamma) {
+std::shared_ptr<const MIPMap<T>> TextureFactory::mipmap(const std::string& path,
+                                                        const std::string& colorSpace,
+                                                        WrapMode wrap, Float scale, Float gamma,
+                                                        const TextureDesc& d) {
   MipKey key{path, colorSpace, wrap, scale, gamma};
-  auto& cache = factory_.store<T>().mipmaps;
+  auto& cache = store<T>().mipmaps;
   if (auto it = cache.find(key); it != cache.end()) return it->second;
-  const ImageBuffer& img = factory_.image(path, colorSpace, desc_);
+  const ImageBuffer& img = image(path, colorSpace, d);
   std::vector<T> texels;
   if constexpr (std::is_same_v<T, Float>)
     texels = floatTexels(img, scale, gamma);
   else
     texels = spectrumTexels(img, scale, gamma);
-  if (factory_.imageOrigin_ == ImageOrigin::BottomLeft) texels = bottomRowFirst(texels, img.width);
-  std::shared_ptr<const MIPMap<T>> mipmap;
+  if (imageOrigin_ == ImageOrigin::BottomLeft) texels = bottomRowFirst(texels, img.width);
+  std::shared_ptr<const MIPMap<T>> made;
   try {
-    mipmap = std::make_shared<const MIPMap<T>>(img.width, img.height, std::move(texels), wrap);
+    made = std::make_shared<const MIPMap<T>>(img.width, img.height, std::move(texels), wrap);
   } catch (const std::invalid_argument& e) {
-    throw SceneError(desc_.loc,
-                     "image texture '" + desc_.textureName + "' (" + path + "): " + e.what());
+    throw SceneError(d.loc, "image texture '" + d.textureName + "' (" + path + "): " + e.what());
   }
-  cache[key] = mipmap;
-  ++factory_.mipmapsBuilt_;
-  return mipmap;
+  cache[key] = made;
+  ++mipmapsBuilt_;
+  return made;
 }
-
-// The texture classes' create functions (texture_plugins.cpp) are compiled elsewhere.
-template const Texture<Float>* TextureFactory::Context::texture<Float>(const std::string&,
-                                                                       const Float&);
-template const Texture<Spectrum>* TextureFactory::Context::texture<Spectrum>(const std::string&,
-                                                                             const Spectrum&);
-template std::shared_ptr<const MIPMap<Float>> TextureFactory::Context::mipmap<Float>(
-    const std::string&, const std::string&, WrapMode, Float, Float);
-template std::shared_ptr<const MIPMap<Spectrum>> TextureFactory::Context::mipmap<Spectrum>(
-    const std::string&, const std::string&, WrapMode, Float, Float);
 
 const ImageBuffer& TextureFactory::image(const std::string& path, const std::string& colorSpace,
                                          const TextureDesc& d) {

@@ -1,20 +1,20 @@
 // Creates the textures that materials name, once each and only when used (DESIGN.md, data flow
 // step 2), and turns a material parameter into a texture: a "texture" reference or a constant.
 //
-// Texture classes: the textures' table (assembly/texture_plugins.cpp: pbrt-v2's names, parameters
-// and defaults; src/textures/ documents each class), through which create() dispatches.
+// Texture classes: the textures' table (textures/texture_plugins.cpp: pbrt-v2's names, parameters
+// and defaults), through which create() dispatches; each class's create function reads its
+// statement through a TextureInputs this factory implements.
 // A name in a texture's, material's or shape's parameters means the definition bound to it at
 // that statement (PluginDesc::textures, from SceneBuilder: pbrt's graphics-state scoping), so a
 // texture only ever names earlier textures and references cannot form a cycle. Descriptions
 // without bindings (made by hand) read a name as its latest definition before the texture, or the
 // latest of all for a material.
 //
-// Image textures read their files through the ImageLoader (candela_io's loadTextureImage in the
-// renderer: OpenImageIO + OpenColorIO), one load per (path, colour space) however many textures
-// use it, and one MIP map per (path, colour space, wrap, scale, gamma, float/spectrum). Relative
-// filenames resolve against the directory of the scene file holding the Texture statement. A
-// missing or unreadable file is an error naming the path (pbrt-v2 warned and used a constant);
-// an image texture no material uses is never loaded.
+// Image textures read their files through the ImageLoader (core/image_loader.h), one load per
+// (path, colour space) however many textures use it, and one MIP map per (path, colour space, wrap,
+// scale, gamma, float/spectrum). Relative filenames resolve against the directory of the scene file
+// holding the Texture statement. A missing or unreadable file is an error naming the path (pbrt-v2
+// warned and used a constant); an image texture no material uses is never loaded.
 #pragma once
 
 #include <functional>
@@ -25,7 +25,7 @@
 #include <tuple>
 #include <vector>
 
-#include "core/image_buffer.h"
+#include "core/image_loader.h"
 #include "parser/scene_description.h"
 #include "textures/mipmap.h"
 #include "textures/noise.h"
@@ -35,16 +35,6 @@ namespace candela {
 
 class TextureFactory {
  public:
-  // Reads the image at path converted from colorSpace ("": the default rule, sRGB for integer
-  // pixels and scene_linear for float pixels; kSrgbEncoded or kStoredLinear: the space the
-  // default rule gives integer or float pixels, whatever the file's pixel type; else an OCIO
-  // name) to the rendering space (scene_linear, or the --colorspace working space). Throws naming
-  // the path.
-  using ImageLoader =
-      std::function<ImageBuffer(const std::string& path, const std::string& colorSpace)>;
-  // pbrt-v3's "bool gamma" true and false (not OCIO names: '<' cannot start one).
-  static constexpr const char* kSrgbEncoded = "<srgb-encoded>";
-  static constexpr const char* kStoredLinear = "<stored-linear>";
   using Warn = std::function<void(const FileLoc&, const std::string&)>;
 
   // Where an image texture's t = 0 lies: pbrt-v3 puts (s, t) = (0, 0) at the image's lower left
@@ -83,33 +73,6 @@ class TextureFactory {
     return store<T>().owned.back().get();
   }
 
-  // What a texture class's create function (assembly/texture_plugins.cpp) builds from: the
-  // Texture statement, the textures it may name, and the factory's settings and image cache.
-  class Context {
-   public:
-    Context(TextureFactory& factory, const TextureDesc& desc, size_t index)
-        : factory_(factory), desc_(desc), index_(index) {}
-    const TextureDesc& desc() const { return desc_; }
-    const ParamSet& params() const { return desc_.params; }
-    // The parameter as a texture of type T (as TextureFactory::spectrum and scalar): a named
-    // texture in effect at the statement (without bindings: defined before this texture), or a
-    // constant of the given value (def when absent).
-    template <typename T>
-    const Texture<T>* texture(const std::string& name, const T& def);
-    ClampedOctaves clampedOctaves() const { return factory_.clampedOctaves_; }
-    // The MIP map of the image at path, read and built once per (path, colour space, wrap,
-    // scale, gamma) and type; the image's rows in the order the scene's dialect wants. Errors
-    // name this texture and the path.
-    template <typename T>
-    std::shared_ptr<const MIPMap<T>> mipmap(const std::string& path, const std::string& colorSpace,
-                                            WrapMode wrap, Float scale, Float gamma);
-
-   private:
-    TextureFactory& factory_;
-    const TextureDesc& desc_;
-    size_t index_;  // of desc_ in the factory's descriptions
-  };
-
   int texturesCreated() const { return created_; }  // named textures (not inline constants)
   int imagesLoaded() const { return imagesLoaded_; }
   int mipmapsBuilt() const { return mipmapsBuilt_; }
@@ -129,6 +92,7 @@ class TextureFactory {
   };
   template <typename T>
   Store<T>& store();
+  class Inputs;  // the TextureInputs of one statement
 
   // Without bindings, textures may only name textures defined before index `visible` (see above).
   template <typename T>
@@ -138,6 +102,10 @@ class TextureFactory {
   const Texture<T>* named(size_t index);
   template <typename T>
   std::unique_ptr<Texture<T>> create(const TextureDesc& d, size_t index);
+  template <typename T>
+  std::shared_ptr<const MIPMap<T>> mipmap(const std::string& path, const std::string& colorSpace,
+                                          WrapMode wrap, Float scale, Float gamma,
+                                          const TextureDesc& d);
   std::optional<size_t> find(const std::string& textureName, const std::string& type,
                              size_t visible, const TextureBindings* bindings) const;
   const ImageBuffer& image(const std::string& path, const std::string& colorSpace,

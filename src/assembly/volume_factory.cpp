@@ -1,15 +1,17 @@
 #include "assembly/volume_factory.h"
 
-#include "assembly/volume_plugins.h"
 #include "media/aggregate_volume.h"
+#include "media/medium_plugins.h"
+#include "transport/volume_integrator_plugins.h"
 
 namespace candela {
 
 // The regions and integrators themselves, their parameters and their names are the tables of
-// assembly/volume_plugins.cpp.
+// media/medium_plugins.cpp and transport/volume_integrator_plugins.cpp.
 
 std::unique_ptr<Medium> createVolumeRegion(const VolumeDesc& desc) {
-  return requirePlugin(volumeRegionPlugins(), "volume region", desc.name, desc.loc).create(desc);
+  return requirePlugin(volumeRegionPlugins(), "volume region", desc.name, desc.loc)
+      .create({desc.params, desc.loc, desc.volumeToWorld});
 }
 
 std::unique_ptr<Medium> createSceneVolume(const std::vector<VolumeDesc>& volumes) {
@@ -22,7 +24,7 @@ std::unique_ptr<Medium> createSceneVolume(const std::vector<VolumeDesc>& volumes
 
 std::unique_ptr<VolumeIntegrator> createVolumeIntegrator(const PluginDesc& desc) {
   return requirePlugin(volumeIntegratorPlugins(), "volume integrator", desc.name, desc.loc)
-      .create(desc);
+      .create(desc.params, desc.loc);
 }
 
 }  // namespace candela

@@ -12,7 +12,7 @@
 namespace candela {
 
 // One region, in its volumeToWorld space: the entry of volumeRegionPlugins()
-// (assembly/volume_plugins.h) that desc.name names.
+// (media/medium_plugins.h, transport/volume_integrator_plugins.h) that desc.name names.
 std::unique_ptr<Medium> createVolumeRegion(const VolumeDesc& desc);
 
 // The medium filling the scene: null without regions, the region itself for one, their

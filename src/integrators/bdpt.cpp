@@ -57,26 +57,6 @@ BdptIntegrator::BdptIntegrator(const CameraImportance& camera, int maxDepth,
 
 BdptIntegrator::~BdptIntegrator() = default;
 
-RenderResult BdptIntegrator::renderSamples(const RenderInputs& in, Film& film,
-                                           const RenderOptions& options) {
-  // A light subpath belongs to a camera sample (pixel, sample index) and may land anywhere on the
-  // film. So with a crop window every pixel of the full image still takes its samples, as in the
-  // uncropped render (the film keeps only what lands in the crop); a cropped image is then the
-  // same bits as that region of the full one, at the cost of the full render's work.
-  // The splats' filter weights are normalised over the area camera samples cover, the image and
-  // the filter's reach past its edges (film.filterSupportArea): the light-tracing strategy then
-  // measures each pixel as the camera strategies do, whose samples reach past the edges too, and
-  // their MIS weights sum to one. Normalised over the image alone, an edge pixel's splats weighed
-  // more than its own samples (the top row of a caustic scene under a Gaussian filter was 3.3%
-  // brighter than path tracing's).
-  SampleLoop loop = sampleLoop(in, film);
-  loop.splats = &film.enableSplats(film.filterSupportArea());
-  loop.pixels = Bounds2i(Point2i(0, 0), film.fullResolution());
-  RenderResult result = renderPixelSamples(in, film, options, loop);
-  film.addLightPaths(result.samples);
-  return result;
-}
-
 std::vector<NamedImage> BdptIntegrator::extraImages(const Film& film) const {
   std::vector<NamedImage> images;
   Bounds2i b = film.pixelBounds();

@@ -34,9 +34,6 @@ class BdptIntegrator : public PixelSampleIntegrator {
                  const Point3f& lightReference = Point3f(0, 0, 0));
   ~BdptIntegrator() override;
   void preprocess(const Scene& scene, const PreprocessOptions&) override;
-  // Every pixel's samples, those outside the crop window too, with light subpaths splatted.
-  RenderResult renderSamples(const RenderInputs& in, Film& film,
-                             const RenderOptions& options) override;
   PixelLight pixelLight() const override { return PixelLight::Splatted; }
   std::vector<NamedImage> extraImages(const Film& film) const override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,

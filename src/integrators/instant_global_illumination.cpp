@@ -46,23 +46,27 @@ Spectrum InstantGlobalIlluminationIntegrator::trace(const RayDifferential& ray, 
                                                     IntegratorContext& ctx, int set, int depth,
                                                     bool withEmission, Float* alpha) const {
   SurfaceInteraction isect;
-  Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
-  if (!scene.intersect(ray, &isect, ctx.stats)) {
-    *alpha = 0;
-    Spectrum l(0);
-    if (withEmission)
-      for (const Light* light : scene.lights()) l += light->Le(ray);
-    return l;
-  }
-  *alpha = 1;
-  const Primitive& prim = *isect.primitive;
+  RayDifferential r;
+  // An interface passed on the way is seen (its emission) but does not scatter.
+  Spectrum interfaces(0);
+  bool crossed = false;
+  bool hit =
+      intersectScattering(scene, ray, &r, &isect, ctx.stats, [&](const SurfaceInteraction& at) {
+        crossed = true;
+        if (withEmission && at.primitive->areaLight)
+          interfaces += at.primitive->areaLight->L(at, at.wo);
+      });
+  *alpha = hit || crossed ? 1 : 0;
   Spectrum l(0);
-  if (withEmission && prim.areaLight) l += prim.areaLight->L(isect, isect.wo);
-  if (!prim.material) {
-    Float a;
-    return l + trace(continueThrough(isect, ray, tMax), scene, ctx, set, depth, withEmission, &a);
+  if (!hit) {
+    if (withEmission)
+      for (const Light* light : scene.lights()) l += light->Le(r);
+    return crossed ? interfaces + l : l;
   }
-  return l + scatter(isect, ray, scene, ctx, set, depth);
+  const Primitive& prim = *isect.primitive;
+  if (withEmission && prim.areaLight) l += prim.areaLight->L(isect, isect.wo);
+  l += scatter(isect, r, scene, ctx, set, depth);
+  return crossed ? interfaces + l : l;
 }
 
 Spectrum InstantGlobalIlluminationIntegrator::scatter(SurfaceInteraction& isect,

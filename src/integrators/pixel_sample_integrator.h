@@ -49,7 +49,8 @@ class PixelSampleIntegrator : public Integrator {
   ProgressiveResult render(const RenderInputs& in, Film& film,
                            const ProgressiveOptions& options) override;
   // One pass: samples [options.firstSample, options.endSample) of every pixel of the film's
-  // bounds. Rendering [0, a) then [a, b) into one film gives the same bits as [0, b).
+  // bounds, or of the full image with splats on for an integrator whose pixelLight() is
+  // Splatted. Rendering [0, a) then [a, b) into one film gives the same bits as [0, b).
   virtual RenderResult renderSamples(const RenderInputs& in, Film& film,
                                      const RenderOptions& options);
   // The radiance arriving along a camera ray; *alpha is set to 1 when the ray hits a surface and

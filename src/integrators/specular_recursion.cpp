@@ -2,6 +2,7 @@
 
 #include "accel/primitive.h"
 #include "materials/material.h"
+#include "transport/scattering_surface.h"
 #include "transport/specular_differentials.h"
 #include "transport/volume_transmittance.h"
 
@@ -23,32 +24,35 @@ Spectrum SpecularRecursionIntegrator::trace(const RayDifferential& ray, const Sc
                                             IntegratorContext& ctx, int depth, Float* alpha,
                                             const SurfaceTerm* term) const {
   SurfaceInteraction isect;
+  RayDifferential r;
+  // An interface passed on the way is seen (its emission) but does not scatter: the ray goes on
+  // at the same depth.
+  Spectrum interfaces(0);
+  bool crossed = false;
+  bool hit =
+      intersectScattering(scene, ray, &r, &isect, ctx.stats, [&](const SurfaceInteraction& at) {
+        crossed = true;
+        if (at.primitive->areaLight) interfaces += at.primitive->areaLight->L(at, at.wo);
+      });
+  *alpha = hit || crossed ? 1 : 0;
   Spectrum l(0);
-  Float tMax = ray.tMax;  // intersect shortens ray.tMax to the hit
-  if (!scene.intersect(ray, &isect, ctx.stats)) {
-    *alpha = 0;
-    for (const Light* light : scene.lights()) l += light->Le(ray);
-    return l;
+  if (!hit) {
+    for (const Light* light : scene.lights()) l += light->Le(r);
+    return crossed ? interfaces + l : l;
   }
-  *alpha = 1;
   const Primitive& prim = *isect.primitive;
   if (prim.areaLight) l += prim.areaLight->L(isect, isect.wo);
-  if (!prim.material) {
-    // An interface without scattering: continue straight through, at the same depth.
-    Float a;
-    return l + trace(continueThrough(isect, ray, tMax), scene, ctx, depth, &a, term);
-  }
-  isect.computeDifferentials(ray);
+  isect.computeDifferentials(r);
   const BSDF* bsdf = prim.material->getBSDF(isect, ctx.arena);
   l += term ? (*term)(isect, *bsdf, ctx) : directLight(isect, *bsdf, scene, ctx);
 
   if (depth + 1 < maxDepth_)
-    l += specularlyScattered(isect, *bsdf, ray, ctx.sampler, [&](const RayDifferential& next) {
+    l += specularlyScattered(isect, *bsdf, r, ctx.sampler, [&](const RayDifferential& next) {
       Float a;
       Spectrum li = trace(next, scene, ctx, depth + 1, &a, term);  // next.tMax is now the hit's
       return li * volumeTransmittance(next, scene, ctx);
     });
-  return l;
+  return crossed ? interfaces + l : l;
 }
 
 }  // namespace candela

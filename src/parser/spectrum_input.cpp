@@ -7,8 +7,8 @@
 
 #include "core/cie_data.h"
 #include "core/error.h"
+#include "core/number_file.h"
 #include "core/read_file.h"
-#include "parser/number_file.h"
 
 namespace candela {
 

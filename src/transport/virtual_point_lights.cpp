@@ -11,7 +11,7 @@
 #include "reflection/bxdf.h"
 #include "samplers/radical_inverse.h"
 #include "transport/light_paths.h"
-#include "transport/specular_differentials.h"
+#include "transport/scattering_surface.h"
 
 namespace candela {
 
@@ -50,13 +50,9 @@ void traceOnePath(const Scene& scene, const Distribution1D& lightChoice,
   const int nonSpecularReflection = kReflection | kDiffuse | kGlossy;
   for (int vertex = 0; vertex < kMaxPathVertices; ++vertex) {
     SurfaceInteraction isect;
-    Float tMax = ray.tMax;
-    if (!scene.intersect(ray, &isect, stats)) break;
+    // A vertex is a scattering surface: the interfaces passed on the way are none.
+    if (!intersectScattering(scene, &ray, &isect, stats)) break;
     const Primitive& prim = *isect.primitive;
-    if (!prim.material) {
-      ray = continueThrough(isect, ray, tMax);
-      continue;
-    }
     const BSDF* bsdf = prim.material->getBSDF(isect, arena);
     Vector3f wo = isect.wo;
     if (bsdf->numComponents(nonSpecularReflection) > 0) {

@@ -18,16 +18,7 @@ class RandomSplatter : public PixelSampleIntegrator {
  public:
   explicit RandomSplatter(Point2i res) : res_(res) {}
   PixelLight pixelLight() const override { return PixelLight::Splatted; }
-  // As bdpt: every pixel of the full image takes its samples, their splats landing anywhere.
-  RenderResult renderSamples(const RenderInputs& in, Film& film,
-                             const RenderOptions& options) override {
-    SampleLoop loop = sampleLoop(in, film);
-    loop.splats = &film.enableSplats(film.filterSupportArea());
-    loop.pixels = Bounds2i(Point2i(0, 0), film.fullResolution());
-    RenderResult result = renderPixelSamples(in, film, options, loop);
-    film.addLightPaths(result.samples);
-    return result;
-  }
+  // As bdpt, the base's loop then takes every pixel of the full image, its splats landing anywhere.
   Spectrum Li(const RayDifferential&, const Scene&, IntegratorContext& ctx,
               Float* alpha) const override {
     *alpha = 1;

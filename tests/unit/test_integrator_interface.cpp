@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "assembly/integrator_plugins.h"
+#include "integrators/integrator_plugins.h"
 #include "integrators/pixel_sample_integrator.h"
 #include "support/render_scene.h"
 

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "shapes/loop_subdiv.h"
+#include "support/scene_error_of.h"
 
 namespace candela {
 namespace {
@@ -151,12 +152,9 @@ TEST(LoopSubdiv, BoundaryLimitRules) {
 }
 
 std::string errorOf(const LoopMesh& m) {
-  try {
+  return test::sceneErrorOf([&] {
     buildLoopTopology(m, FileLoc{"scene.lrt", 7, 3}, "loopsubdiv");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
+  });
 }
 
 TEST(LoopSubdiv, BadTopologyNamesTheFace) {

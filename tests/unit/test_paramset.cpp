@@ -2,20 +2,13 @@
 
 #include "core/paramset.h"
 #include "support/param_items.h"
+#include "support/scene_error_of.h"
 
 using namespace candela;
 
 namespace {
 
-template <typename F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::sceneErrorOf;
 
 }  // namespace
 
@@ -53,21 +46,21 @@ TEST(ParamSet, AddReplacesSameName) {
 TEST(ParamSet, TypeMismatchErrorsAtTheItem) {
   ParamSet ps;
   ps.add(test::strings("radius", {"big"}, FileLoc{"p.pbrt", 7, 2}));
-  EXPECT_EQ(errorOf([&] { ps.getOneFloat("radius", 1); }),
+  EXPECT_EQ(sceneErrorOf([&] { ps.getOneFloat("radius", 1); }),
             "p.pbrt:7:2: error: parameter \"string radius\" has type 'string', expected 'float'");
 }
 
 TEST(ParamSet, WrongCountErrorsAtTheItem) {
   ParamSet ps;
   ps.add(test::floats("radius", {1, 2}, FileLoc{"p.pbrt", 5, 9}));
-  EXPECT_EQ(errorOf([&] { ps.getOneFloat("radius", 1); }),
+  EXPECT_EQ(sceneErrorOf([&] { ps.getOneFloat("radius", 1); }),
             "p.pbrt:5:9: error: parameter \"float radius\" needs exactly one value, found 2");
 }
 
 TEST(ParamSet, SpectrumOfANonSpectrumItemErrors) {
   ParamSet ps;
   ps.add(test::floats("Kd", {0.5f}, FileLoc{"p.pbrt", 4, 9}));
-  EXPECT_EQ(errorOf([&] { ps.getOneSpectrum("Kd", Spectrum()); }),
+  EXPECT_EQ(sceneErrorOf([&] { ps.getOneSpectrum("Kd", Spectrum()); }),
             "p.pbrt:4:9: error: parameter \"float Kd\" has type 'float', expected 'spectrum'");
 }
 
@@ -100,7 +93,7 @@ TEST(ParamSet, Point2ArrayFromFloatPairs) {
   ASSERT_EQ(uv.size(), 4u);
   EXPECT_EQ(uv[2], Point2f(5, 5));
   ps.add(test::floats("st", {0, 0, 5}, FileLoc{"p.pbrt", 6, 9}));
-  EXPECT_EQ(errorOf([&] { ps.getPoint2fArray("st"); }),
+  EXPECT_EQ(sceneErrorOf([&] { ps.getPoint2fArray("st"); }),
             "p.pbrt:6:9: error: parameter \"float st\" needs (u, v) pairs: an even count of "
             "numbers, found 3");
 }
@@ -108,7 +101,7 @@ TEST(ParamSet, Point2ArrayFromFloatPairs) {
 TEST(ParamSet, ArrayTypeMismatchErrors) {
   ParamSet ps;
   ps.add(test::vectors("P", {0, 0, 0}, FileLoc{"p.pbrt", 8, 9}));
-  EXPECT_EQ(errorOf([&] { ps.getPoint3fArray("P"); }),
+  EXPECT_EQ(sceneErrorOf([&] { ps.getPoint3fArray("P"); }),
             "p.pbrt:8:9: error: parameter \"vector3 P\" has type 'vector3', expected 'point3'");
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "parser/parser.h"
+#include "support/scene_error_of.h"
 
 using namespace candela;
 
@@ -149,12 +150,7 @@ Recorder parse(const std::string& text, std::vector<std::string>* warnings = nul
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::sceneErrorOf([&] { parse(text); });
 }
 
 // A scratch directory for tests that need files.

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "assembly/photon_map_params.h"
 #include "assembly/plugin_factories.h"
+#include "integrators/photon_map_params.h"
 #include "support/param_items.h"
 
 namespace candela {
@@ -21,8 +21,10 @@ PluginDesc desc(std::vector<ParamItem> items, const std::string& name = "photonm
   return d;
 }
 
+PhotonMapSettings settingsOf(const PluginDesc& d) { return photonMapSettings(d.params, d.loc); }
+
 TEST(PhotonMapParams, DefaultsArePbrtV2s) {
-  PhotonMapSettings s = photonMapSettings(desc({}));
+  PhotonMapSettings s = settingsOf(desc({}));
   EXPECT_EQ(s.causticPhotons, 20000);
   EXPECT_EQ(s.indirectPhotons, 100000);
   EXPECT_EQ(s.nUsed, 50);
@@ -38,15 +40,15 @@ TEST(PhotonMapParams, DefaultsArePbrtV2s) {
 
 TEST(PhotonMapParams, LrtDraftNamesAndIntegerFlags) {
   PhotonMapSettings s =
-      photonMapSettings(desc({test::ints("maxdepth", {7}), test::ints("finalgather", {0}),
-                              test::ints("directwithphotons", {1}),
-                              test::ints("directphotons", {1234}), test::ints("nfilter", {4})}));
+      settingsOf(desc({test::ints("maxdepth", {7}), test::ints("finalgather", {0}),
+                       test::ints("directwithphotons", {1}), test::ints("directphotons", {1234}),
+                       test::ints("nfilter", {4})}));
   EXPECT_EQ(s.maxSpecularDepth, 7);
   EXPECT_FALSE(s.finalGather);
   EXPECT_TRUE(s.directWithPhotons);
   EXPECT_EQ(s.directPhotons, 1234);
   EXPECT_EQ(s.nFilter, 4);
-  EXPECT_FALSE(photonMapSettings(desc({test::bools("finalgather", {false})})).finalGather);
+  EXPECT_FALSE(settingsOf(desc({test::bools("finalgather", {false})})).finalGather);
 }
 
 TEST(PhotonMapParams, BothNamesMakeTheSameIntegrator) {
@@ -60,7 +62,7 @@ TEST(PhotonMapParams, BothNamesMakeTheSameIntegrator) {
 // The error must name the parameter's own location, not the statement's.
 void expectLocatedError(std::vector<ParamItem> items, const std::string& mentions) {
   try {
-    photonMapSettings(desc(std::move(items)));
+    settingsOf(desc(std::move(items)));
     ADD_FAILURE() << "no error for " << mentions;
   } catch (const SceneError& e) {
     EXPECT_EQ(e.location().line, kParam.line) << e.what();

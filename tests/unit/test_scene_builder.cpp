@@ -9,6 +9,7 @@
 #include "parser/parser.h"
 #include "parser/scene_builder.h"
 #include "parser/tokenizer.h"
+#include "support/scene_error_of.h"
 
 using namespace candela;
 
@@ -37,12 +38,7 @@ SceneDescription one(const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    build(text);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::sceneErrorOf([&] { build(text); });
 }
 
 void expectPoint(const Point3f& p, Float x, Float y, Float z) {

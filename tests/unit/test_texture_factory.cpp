@@ -5,6 +5,7 @@
 #include "assembly/texture_factory.h"
 #include "support/param_items.h"
 #include "support/render_scene.h"
+#include "support/scene_error_of.h"
 #include "textures/dots.h"
 #include "textures/image_texture.h"
 
@@ -28,15 +29,7 @@ TextureDesc tex(const std::string& name, const std::string& type, const std::str
   return d;
 }
 
-template <typename F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::sceneErrorOf;
 
 const FileLoc kMatLoc{"/scenes/a/scene.pbrt", 20, 1};
 
@@ -44,7 +37,7 @@ const FileLoc kMatLoc{"/scenes/a/scene.pbrt", 20, 1};
 struct FakeLoader {
   std::vector<std::pair<std::string, std::string>> calls;
   Float value = 0.5f;
-  TextureFactory::ImageLoader loader() {
+  ImageLoader loader() {
     return [this](const std::string& path, const std::string& colorSpace) {
       calls.emplace_back(path, colorSpace);
       if (path.find("missing") != std::string::npos)
@@ -155,7 +148,7 @@ TEST(TextureFactory, TexturesNameEarlierTexturesOnly) {
   };
   TextureFactory g(cyclic);
   std::string e =
-      errorOf([&] { g.scalar(test::paramSet({test::texture("x", "p")}), "x", 0, kMatLoc); });
+      sceneErrorOf([&] { g.scalar(test::paramSet({test::texture("x", "p")}), "x", 0, kMatLoc); });
   EXPECT_NE(e.find("no float texture named 'q' defined before this texture"), std::string::npos)
       << e;
 }
@@ -172,12 +165,13 @@ TEST(TextureFactory, Errors) {
   };
   TextureFactory f(descs);
   auto useS = [&](const std::string& name) {
-    return errorOf([&] {
+    return sceneErrorOf([&] {
       f.spectrum(test::paramSet({test::texture("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
     });
   };
   auto useF = [&](const std::string& name) {
-    return errorOf([&] { f.scalar(test::paramSet({test::texture("x", name)}), "x", 0, kMatLoc); });
+    return sceneErrorOf(
+        [&] { f.scalar(test::paramSet({test::texture("x", name)}), "x", 0, kMatLoc); });
   };
   std::string e = useS("weird");
   EXPECT_NE(e.find("scene.pbrt:7:1"), std::string::npos) << e;
@@ -262,7 +256,7 @@ TEST(TextureFactory, ImageErrorsNameThePath) {
   };
   TextureFactory f(descs, fake.loader());
   auto use = [&](const std::string& name) {
-    return errorOf([&] {
+    return sceneErrorOf([&] {
       f.spectrum(test::paramSet({test::texture("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
     });
   };
@@ -276,7 +270,7 @@ TEST(TextureFactory, ImageErrorsNameThePath) {
   EXPECT_EQ(fake.calls.size(), 1u);  // the parameter errors came before any reading
 
   TextureFactory noReader(descs);
-  e = errorOf([&] {
+  e = sceneErrorOf([&] {
     noReader.spectrum(test::paramSet({test::texture("Kd", "gone")}), "Kd", Spectrum(1), kMatLoc);
   });
   EXPECT_NE(e.find("no image reader"), std::string::npos) << e;
@@ -293,7 +287,7 @@ TEST(TextureFactory, ImageScaleAndGamma) {
   };
   // "trilinear" of the wrong type is an error at its own location.
   TextureFactory bad(descs, fake.loader());
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(sceneErrorOf([&] {
               bad.scalar(test::paramSet({test::texture("x", "g")}), "x", 0, kMatLoc);
             }).find("trilinear"),
             std::string::npos);
@@ -329,7 +323,7 @@ TEST(TextureFactory, BindingsChooseTheDefinitionInEffect) {
                       ->evaluate(atUV(0, 0)),
                   0.1f);
   TextureBindings none;
-  std::string e = errorOf([&] {
+  std::string e = sceneErrorOf([&] {
     f.scalar(test::paramSet({test::texture("x", "m", FileLoc{"/scenes/a/scene.pbrt", 30, 9})}), "x",
              0, kMatLoc, &none);
   });
@@ -378,7 +372,7 @@ TEST(TextureFactory, SolidTexturesUseTheCtmAsWorldToTexture) {
 // (pbrt-v2, v3), whatever the transform at the Texture statement.
 TEST(TextureFactory, ImageTexturesHonourTheMapping) {
   // Two texels: 0 on the left, 1 on the right.
-  TextureFactory::ImageLoader twoTexels = [](const std::string&, const std::string&) {
+  ImageLoader twoTexels = [](const std::string&, const std::string&) {
     ImageBuffer img(2, 1, {"R", "G", "B"});
     for (int c = 0; c < 3; ++c) img.at(0, 0, c) = 0, img.at(1, 0, c) = 1;
     return img;
@@ -419,8 +413,8 @@ TEST(TextureFactory, ImageGammaAsPbrtV3Bool) {
   for (const char* name : {"on", "off", "named", "absent"})
     f.spectrum(test::paramSet({test::texture("Kd", name)}), "Kd", Spectrum(1), kMatLoc);
   ASSERT_EQ(fake.calls.size(), 4u);
-  EXPECT_EQ(fake.calls[0].second, TextureFactory::kSrgbEncoded);
-  EXPECT_EQ(fake.calls[1].second, TextureFactory::kStoredLinear);
+  EXPECT_EQ(fake.calls[0].second, kSrgbEncoded);
+  EXPECT_EQ(fake.calls[1].second, kStoredLinear);
   EXPECT_EQ(fake.calls[2].second, "raw");
   EXPECT_EQ(fake.calls[3].second, "");
   EXPECT_TRUE(warnings.empty());  // "gamma" counts as used
@@ -428,7 +422,7 @@ TEST(TextureFactory, ImageGammaAsPbrtV3Bool) {
 
 // pbrt-v3 puts (s, t) = (0, 0) at the image's lower left corner: t = 0.25 reads the bottom row.
 TEST(TextureFactory, ImageTextureTIsZeroAtTheBottomRow) {
-  TextureFactory::ImageLoader topDark = [](const std::string&, const std::string&) {
+  ImageLoader topDark = [](const std::string&, const std::string&) {
     ImageBuffer img(1, 2, {"R", "G", "B"});
     for (int c = 0; c < 3; ++c) img.at(0, 0, c) = 0, img.at(0, 1, c) = 1;  // row 0 is the top
     return img;

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "parser/tokenizer.h"
+#include "support/scene_error_of.h"
 
 using namespace candela;
 
@@ -20,12 +21,7 @@ std::vector<Token> tokenize(const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    tokenize(text);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::sceneErrorOf([&] { tokenize(text); });
 }
 
 }  // namespace

@@ -10,20 +10,13 @@
 #include "core/value_range.h"
 #include "support/param_items.h"
 #include "support/render_scene.h"
+#include "support/scene_error_of.h"
 
 using namespace candela;
 
 namespace {
 
-template <typename F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::sceneErrorOf;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const double kNaN = std::nan("");
@@ -73,9 +66,9 @@ TEST(ParamSetRanges, OutOfRangeIsLocatedAtTheValue) {
   ps.add(test::ints("nsamples", {0}, FileLoc{"a.pbrt", 4, 11}));
   ps.add(test::floats("g", {1}, FileLoc{"a.pbrt", 5, 3}));
   const FileLoc statement{"a.pbrt", 3, 1};
-  EXPECT_EQ(errorOf([&] { ps.getOneInt("nsamples", 1, ValueRange::atLeast(1), statement); }),
+  EXPECT_EQ(sceneErrorOf([&] { ps.getOneInt("nsamples", 1, ValueRange::atLeast(1), statement); }),
             "a.pbrt:4:11: error: \"nsamples\" must be at least 1 (got 0)");
-  EXPECT_EQ(errorOf([&] { ps.getOneFloat("g", 0, ValueRange::between(-1, 1), statement); }),
+  EXPECT_EQ(sceneErrorOf([&] { ps.getOneFloat("g", 0, ValueRange::between(-1, 1), statement); }),
             "a.pbrt:5:3: error: \"g\" must be within (-1, 1) (got 1)");
   // A value inside the range is returned, and counts as used.
   EXPECT_EQ(ps.getOneInt("nsamples", 1, ValueRange::atLeast(0), statement), 0);
@@ -89,14 +82,14 @@ TEST(ParamSetRanges, AbsentNamesGiveTheDefaultOrTheStatementsLocation) {
   const FileLoc statement{"b.pbrt", 9, 1};
   EXPECT_EQ(ps.getOneFloat("radius", 2, ValueRange::positive(), statement), 2);
   EXPECT_EQ(
-      errorOf([&] { ps.requireInRange("sigma_a", -1, ValueRange::nonNegative(), statement); }),
+      sceneErrorOf([&] { ps.requireInRange("sigma_a", -1, ValueRange::nonNegative(), statement); }),
       "b.pbrt:9:1: error: \"sigma_a\" must be non-negative and finite (got -1)");
 }
 
 TEST(ParamSetRanges, OneOfASetNamesTheSet) {
   ParamSet ps;
   ps.add(test::strings("strategy", {"some"}, FileLoc{"c.pbrt", 2, 7}));
-  EXPECT_EQ(errorOf([&] {
+  EXPECT_EQ(sceneErrorOf([&] {
               ps.getOneString("strategy", "all", {"all", "one"}, FileLoc{});
             }),
             "c.pbrt:2:7: error: \"strategy\" must be one of all, one (got \"some\")");
@@ -119,7 +112,7 @@ TEST(ParamSetRanges, FactoriesWordTheSameRuleAlike) {
   };
   for (const auto& c : cases) {
     std::string text = "Camera \"perspective\"\n" + c.statement + "\n" + world;
-    std::string message = errorOf([&] { test::buildSceneText(text); });
+    std::string message = sceneErrorOf([&] { test::buildSceneText(text); });
     EXPECT_NE(message.find(":2:"), std::string::npos) << message;
     EXPECT_NE(message.find("\"" + c.name + "\" must be at least 1 (got 0)"), std::string::npos)
         << message;
@@ -145,7 +138,7 @@ TEST(ParamSetRanges, MaterialConstantsAreCheckedAlike) {
   for (const auto& c : cases) {
     std::string text = "Camera \"perspective\"\nWorldBegin\nLightSource \"point\"\n" + c.material +
                        "\nShape \"sphere\"\nWorldEnd\n";
-    std::string message = errorOf([&] { test::buildSceneText(text); });
+    std::string message = sceneErrorOf([&] { test::buildSceneText(text); });
     EXPECT_NE(message.find(":4:"), std::string::npos) << message;
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.material << ": " << message;
   }

@@ -24,7 +24,6 @@
 #include "transport/light_paths.h"
 #include "transport/light_sampling.h"
 #include "transport/scattering_surface.h"
-#include "transport/specular_differentials.h"
 
 namespace candela {
 
@@ -113,9 +112,10 @@ class SppmIteration {
     bool specularBounce = false, counted = false;
     for (int depth = 0; depth < s_.maxDepth;) {
       SurfaceInteraction isect;
-      Float tMax = ray.tMax;
-      bool hit = scene_.intersect(ray, &isect, rays);
-      if (hit && !counted) ++px.hits;  // once, past material-less interfaces too
+      bool crossed = false;
+      bool hit = intersectScattering(scene_, &ray, &isect, rays,
+                                     [&](const SurfaceInteraction&) { crossed = true; });
+      if ((hit || crossed) && !counted) ++px.hits;  // once, a material-less interface too
       counted = true;
       bool countEmission = depth == 0 || specularBounce;
       if (!hit) {
@@ -124,10 +124,6 @@ class SppmIteration {
         break;
       }
       const Primitive& prim = *isect.primitive;
-      if (!prim.material) {
-        ray = continueThrough(isect, ray, tMax);
-        continue;
-      }
       if (countEmission && prim.areaLight) ld += beta * prim.areaLight->L(isect, -ray.d);
       if (depth == 0) isect.computeDifferentials(ray);
       const BSDF* bsdf = prim.material->getBSDF(isect, arena);

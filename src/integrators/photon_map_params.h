@@ -3,11 +3,11 @@
 // maxspeculardepth, integer flags). Bad values are located SceneErrors.
 #pragma once
 
+#include "core/paramset.h"
 #include "integrators/photon_map_integrator.h"
-#include "parser/scene_description.h"
 
 namespace candela {
 
-PhotonMapSettings photonMapSettings(const PluginDesc& desc);
+PhotonMapSettings photonMapSettings(const ParamSet& params, const FileLoc& loc);
 
 }  // namespace candela

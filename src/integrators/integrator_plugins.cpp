@@ -1,10 +1,8 @@
 // The integrator and renderer tables. Each parameter list is what the entry's create function
-// reads (integrator_factory.cpp, photon_map_params.cpp, sppm_factory.cpp, metropolis_params.cpp),
+// reads (integrator_params.cpp, photon_map_params.cpp, sppm/sppm_params.cpp,
+// metropolis/metropolis_params.cpp),
 // with the defaults and rules written there; test_plugin_tables.cpp holds the two together.
-#include "assembly/integrator_plugins.h"
-
-#include "assembly/metropolis_params.h"
-#include "assembly/sppm_factory.h"
+#include "integrators/integrator_plugins.h"
 
 namespace candela {
 
@@ -21,7 +19,7 @@ constexpr ParamSpec in(ParamSpec spec, unsigned dialects) {
   return spec;
 }
 
-// Integrators that recurse once per specular level take at most 1000 (integrator_factory.cpp).
+// Integrators that recurse once per specular level take at most 1000 (integrator_params.cpp).
 constexpr ParamSpec kRecursiveMaxDepth{"maxdepth",
                                        "integer",
                                        "5",

@@ -23,69 +23,66 @@
 //                            bootstrap path, so chains of few mutations (small images) keep some
 //                            start-up bias: fewer chains, longer each, for those
 // --quick divides the sample counts (mutations, bootstrap, direct samples) by 4 (pbrt-v2's rule).
-#include "assembly/metropolis_params.h"
-
+#include "integrators/integrator_plugins.h"
 #include "integrators/metropolis/metropolis_integrator.h"
 
 namespace candela {
 
 namespace {
 
-int atLeast(const PluginDesc& desc, const char* name, int def, int minimum) {
+int atLeast(const IntegratorInputs& desc, const char* name, int def, int minimum) {
   return desc.params.getOneInt(name, def, ValueRange::atLeast(minimum), desc.loc);
 }
 
-Float probability(const PluginDesc& desc, const char* name, Float def) {
+Float probability(const IntegratorInputs& desc, const char* name, Float def) {
   return desc.params.getOneFloat(name, def, ValueRange::within(0, 1), desc.loc);
 }
 
-const CameraImportance& importanceOf(const PluginDesc& desc, const WholeImageContext& c) {
-  const CameraImportance* importance = c.camera ? c.camera->importance() : nullptr;
+const CameraImportance& importanceOf(const IntegratorInputs& desc) {
+  const CameraImportance* importance = desc.camera ? desc.camera->importance() : nullptr;
   if (!importance)
     throw SceneError(desc.loc, std::string("'")
                                    .append(desc.name)
                                    .append("' connects light paths to the camera, which the '")
-                                   .append(c.camera ? c.camera->kind() : "(none)")
+                                   .append(desc.camera ? desc.camera->kind() : "(none)")
                                    .append("' camera does not support (use 'perspective')"));
   return *importance;
 }
 
-int quarterIfQuick(int n, const WholeImageContext& c) { return c.quick ? std::max(1, n / 4) : n; }
+int quarterIfQuick(int n, const IntegratorInputs& c) { return c.quick ? std::max(1, n / 4) : n; }
 
 }  // namespace
 
-std::unique_ptr<Integrator> createMltRenderer(const PluginDesc& desc,
-                                              const WholeImageContext& context) {
+std::unique_ptr<Integrator> createMltRenderer(const IntegratorInputs& desc) {
   MetropolisSettings s;
   s.maxDepth = atLeast(desc, "maxdepth", 5, 0);
-  s.bootstrapSamples = quarterIfQuick(atLeast(desc, "bootstrapsamples", 100000, 1), context);
+  s.bootstrapSamples = quarterIfQuick(atLeast(desc, "bootstrapsamples", 100000, 1), desc);
   s.chains = atLeast(desc, "chains", 1000, 1);
   s.mutationsPerPixel = atLeast(desc, "mutationsperpixel", 100, 1);
-  if (context.sppOverride > 0) s.mutationsPerPixel = context.sppOverride;
-  s.mutationsPerPixel = quarterIfQuick(int(s.mutationsPerPixel), context);
+  if (desc.sppOverride > 0) s.mutationsPerPixel = desc.sppOverride;
+  s.mutationsPerPixel = quarterIfQuick(int(s.mutationsPerPixel), desc);
   s.largeStepProbability = probability(desc, "largestepprobability", 0.3f);
   s.sigma = desc.params.getOneFloat("sigma", 0.01f, ValueRange::positive(), desc.loc);
   s.bidirectional = true;
-  return std::make_unique<MetropolisIntegrator>(importanceOf(desc, context), s, context.seed);
+  return std::make_unique<MetropolisIntegrator>(importanceOf(desc), s, desc.seed);
 }
 
-std::unique_ptr<Integrator> createMetropolisIntegrator(const PluginDesc& desc,
-                                                       const WholeImageContext& context) {
+std::unique_ptr<Integrator> createMetropolisIntegrator(const IntegratorInputs& desc) {
   MetropolisSettings s;
   s.maxDepth = atLeast(desc, "maxdepth", 7, 0);
-  s.bootstrapSamples = quarterIfQuick(atLeast(desc, "bootstrapsamples", 100000, 1), context);
+  s.bootstrapSamples = quarterIfQuick(atLeast(desc, "bootstrapsamples", 100000, 1), desc);
   s.mutationsPerPixel = atLeast(desc, "samplesperpixel", 100, 1);
-  if (context.sppOverride > 0) s.mutationsPerPixel = context.sppOverride;
-  s.mutationsPerPixel = quarterIfQuick(int(s.mutationsPerPixel), context);
+  if (desc.sppOverride > 0) s.mutationsPerPixel = desc.sppOverride;
+  s.mutationsPerPixel = quarterIfQuick(int(s.mutationsPerPixel), desc);
   s.largeStepProbability = probability(desc, "largestepprobability", 0.25f);
   s.maxConsecutiveRejects = atLeast(desc, "maxconsecutiverejects", 512, 1);
   s.chains = atLeast(desc, "chains", 1000, 1);
   s.smallStep = PrimarySamples::SmallStep::Exponential;
   s.bidirectional = desc.params.getOneBool("bidirectional", true);
   bool direct = desc.params.getOneBool("dodirectseparately", true);
-  int directSamples = quarterIfQuick(atLeast(desc, "directsamples", 4, 1), context);
+  int directSamples = quarterIfQuick(atLeast(desc, "directsamples", 4, 1), desc);
   s.excludeDirect = direct;
-  return std::make_unique<MetropolisIntegrator>(importanceOf(desc, context), s, context.seed,
+  return std::make_unique<MetropolisIntegrator>(importanceOf(desc), s, desc.seed,
                                                 direct ? directSamples : 0);
 }
 

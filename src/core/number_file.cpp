@@ -1,4 +1,4 @@
-#include "parser/number_file.h"
+#include "core/number_file.h"
 
 #include "core/number_lines.h"
 #include "core/read_file.h"

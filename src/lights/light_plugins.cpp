@@ -1,6 +1,6 @@
 // The lights with pbrt-v2's parameter names and defaults (lrt draft ch. 13); every light
 // multiplies its I or L by "scale" (pbrt-v2, pbrt-v3).
-#include "assembly/light_plugins.h"
+#include "lights/light_plugins.h"
 
 #include <filesystem>
 #include <optional>
@@ -28,20 +28,20 @@ int readSampleCount(const ParamSet& p, const FileLoc& loc) {
 // Its numbers are taken as they are (scene_linear), 8-bit files included, as pbrt-v2 and v3 read
 // light images: pbrt-v3 decodes sRGB 8-bit files only in its image texture (pbrt 3e §10.4), so a
 // PNG diagram, slide or environment is not darkened.
-std::optional<ImageBuffer> readMap(const LightDesc& desc, const TextureFactory::ImageLoader& load) {
-  std::string name = desc.params.getOneString("mapname", "");
+std::optional<ImageBuffer> readMap(const LightInputs& in) {
+  std::string name = in.params.getOneString("mapname", "");
   if (name.empty()) return std::nullopt;
-  FileLoc loc = desc.params.locationOf("mapname", desc.loc);
+  FileLoc loc = in.params.locationOf("mapname", in.loc);
   namespace fs = std::filesystem;
   fs::path path(name);
   if (!path.is_absolute() && !loc.file.empty() && loc.file != "-")
     path = fs::path(loc.file).parent_path() / path;
   std::string where = path.lexically_normal().string();
-  if (!load)
+  if (!in.loadImage)
     throw SceneError(loc, "cannot read light map '" + where + "': no image reader was given");
   ImageBuffer image;
   try {
-    image = load(where, "scene_linear");
+    image = in.loadImage(where, "scene_linear");
   } catch (const std::exception& e) {
     throw SceneError(loc, "cannot read light map '" + where + "': " + e.what());
   }
@@ -60,73 +60,67 @@ std::shared_ptr<const MIPMap<Spectrum>> mipmapOf(const std::optional<ImageBuffer
 // Each create function reads its parameters into locals first, so that the order in which a
 // scene's bad values are reported does not depend on the compiler's argument order.
 
-std::unique_ptr<Light> createPointLight(const LightDesc& desc, const TextureFactory::ImageLoader&) {
-  const ParamSet& p = desc.params;
+std::unique_ptr<Light> createPointLight(const LightInputs& in) {
+  const ParamSet& p = in.params;
   Spectrum scale = readScale(p);
   Spectrum I = p.getOneSpectrum("I", Spectrum(1));
   Point3f from = p.getOnePoint3f("from", Point3f(0, 0, 0));
-  return std::make_unique<PointLight>(desc.lightToWorld.start, I * scale, from);
+  return std::make_unique<PointLight>(in.lightToWorld, I * scale, from);
 }
 
-std::unique_ptr<Light> createSpotLight(const LightDesc& desc, const TextureFactory::ImageLoader&) {
-  const ParamSet& p = desc.params;
+std::unique_ptr<Light> createSpotLight(const LightInputs& in) {
+  const ParamSet& p = in.params;
   Spectrum scale = readScale(p);
   Spectrum I = p.getOneSpectrum("I", Spectrum(1));
   Point3f from = p.getOnePoint3f("from", Point3f(0, 0, 0));
   Point3f to = p.getOnePoint3f("to", Point3f(0, 0, 1));
   Float coneAngle = p.getOneFloat("coneangle", 30);
   Float coneDelta = p.getOneFloat("conedeltaangle", 5);
-  return std::make_unique<SpotLight>(desc.lightToWorld.start, I * scale, from, to, coneAngle,
-                                     coneDelta);
+  return std::make_unique<SpotLight>(in.lightToWorld, I * scale, from, to, coneAngle, coneDelta);
 }
 
-std::unique_ptr<Light> createDistantLight(const LightDesc& desc,
-                                          const TextureFactory::ImageLoader&) {
-  const ParamSet& p = desc.params;
+std::unique_ptr<Light> createDistantLight(const LightInputs& in) {
+  const ParamSet& p = in.params;
   Spectrum scale = readScale(p);
   Spectrum L = p.getOneSpectrum("L", Spectrum(1));
   Point3f from = p.getOnePoint3f("from", Point3f(0, 0, 0));
   Point3f to = p.getOnePoint3f("to", Point3f(0, 0, 1));
-  return std::make_unique<DistantLight>(desc.lightToWorld.start, L * scale, from, to);
+  return std::make_unique<DistantLight>(in.lightToWorld, L * scale, from, to);
 }
 
-std::unique_ptr<Light> createProjectionLight(const LightDesc& desc,
-                                             const TextureFactory::ImageLoader& loadImage) {
-  const ParamSet& p = desc.params;
+std::unique_ptr<Light> createProjectionLight(const LightInputs& in) {
+  const ParamSet& p = in.params;
   Spectrum scale = readScale(p);
-  std::optional<ImageBuffer> image = readMap(desc, loadImage);
+  std::optional<ImageBuffer> image = readMap(in);
   Float aspect = image ? Float(image->width) / Float(image->height) : 1;  // not integer division
   Spectrum I = p.getOneSpectrum("I", Spectrum(1));
   Float fov = p.getOneFloat("fov", 45);
-  return std::make_unique<ProjectionLight>(desc.lightToWorld.start, I * scale, fov, mipmapOf(image),
+  return std::make_unique<ProjectionLight>(in.lightToWorld, I * scale, fov, mipmapOf(image),
                                            aspect);
 }
 
-std::unique_ptr<Light> createGoniometricLight(const LightDesc& desc,
-                                              const TextureFactory::ImageLoader& loadImage) {
-  const ParamSet& p = desc.params;
+std::unique_ptr<Light> createGoniometricLight(const LightInputs& in) {
+  const ParamSet& p = in.params;
   Spectrum scale = readScale(p);
   Spectrum I = p.getOneSpectrum("I", Spectrum(1));
-  std::shared_ptr<const MIPMap<Spectrum>> map = mipmapOf(readMap(desc, loadImage));
-  return std::make_unique<GoniometricLight>(desc.lightToWorld.start, I * scale, std::move(map));
+  std::shared_ptr<const MIPMap<Spectrum>> map = mipmapOf(readMap(in));
+  return std::make_unique<GoniometricLight>(in.lightToWorld, I * scale, std::move(map));
 }
 
-std::unique_ptr<Light> createInfiniteLight(const LightDesc& desc,
-                                           const TextureFactory::ImageLoader& loadImage) {
-  const ParamSet& p = desc.params;
+std::unique_ptr<Light> createInfiniteLight(const LightInputs& in) {
+  const ParamSet& p = in.params;
   Spectrum scale = readScale(p);
-  int nSamples = readSampleCount(p, desc.loc);
+  int nSamples = readSampleCount(p, in.loc);
   LatLongMap map;
-  if (std::optional<ImageBuffer> image = readMap(desc, loadImage))
+  if (std::optional<ImageBuffer> image = readMap(in))
     map = {image->width, image->height, spectrumTexels(*image, 1, 1)};
   Spectrum L = p.getOneSpectrum("L", Spectrum(1));
-  return std::make_unique<InfiniteAreaLight>(desc.lightToWorld.start, L * scale, nSamples,
-                                             std::move(map));
+  return std::make_unique<InfiniteAreaLight>(in.lightToWorld, L * scale, nSamples, std::move(map));
 }
 
-std::unique_ptr<AreaLight> createDiffuseAreaLight(const PluginDesc& desc, const Shape* shape) {
-  const ParamSet& p = desc.params;
-  int nSamples = readSampleCount(p, desc.loc);
+std::unique_ptr<AreaLight> createDiffuseAreaLight(const ParamSet& p, const FileLoc& loc,
+                                                  const Shape* shape) {
+  int nSamples = readSampleCount(p, loc);
   Spectrum L = p.getOneSpectrum("L", Spectrum(1));
   Spectrum scale = readScale(p);
   bool twoSided = p.getOneBool("twosided", false);

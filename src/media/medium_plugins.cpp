@@ -1,4 +1,4 @@
-#include "assembly/volume_plugins.h"
+#include "media/medium_plugins.h"
 
 #include <cstdint>
 #include <string>
@@ -16,11 +16,11 @@ namespace {
 
 // ---- Volume regions (pbrt-v2, lrt draft ch. 12)
 
-[[noreturn]] void fail(const PluginDesc& desc, const char* param, const std::string& what) {
+[[noreturn]] void fail(const MediumInputs& desc, const char* param, const std::string& what) {
   throw SceneError(desc.params.locationOf(param, desc.loc), what);
 }
 
-Spectrum nonNegativeSpectrum(const PluginDesc& desc, const char* name) {
+Spectrum nonNegativeSpectrum(const MediumInputs& desc, const char* name) {
   Spectrum s = desc.params.getOneSpectrum(name, Spectrum(0));
   for (int i = 0; i < 3; ++i)
     desc.params.requireInRange(name, s[i], ValueRange::nonNegative(), desc.loc);
@@ -35,7 +35,7 @@ constexpr std::string_view kPhaseRule =
 
 // pbrt-v2 has only Henyey–Greenstein ("g"); "string phase" selects the others (candela's
 // extension).
-PhaseFunction phaseParam(const PluginDesc& desc) {
+PhaseFunction phaseParam(const MediumInputs& desc) {
   const ParamSet& p = desc.params;
   std::string name = p.getOneString("phase", "hg", kPhaseNames, desc.loc);
   auto g = [&] { return p.getOneFloat("g", 0, ValueRange::between(-1, 1), desc.loc); };
@@ -53,7 +53,7 @@ struct RegionCommon {
   Bounds3f extent;
 };
 
-RegionCommon readRegionCommon(const VolumeDesc& desc) {
+RegionCommon readRegionCommon(const MediumInputs& desc) {
   const ParamSet& p = desc.params;
   RegionCommon r;
   r.c.sigmaA = nonNegativeSpectrum(desc, "sigma_a");
@@ -71,12 +71,12 @@ RegionCommon readRegionCommon(const VolumeDesc& desc) {
   return r;
 }
 
-std::unique_ptr<Medium> createHomogeneousVolume(const VolumeDesc& desc) {
+std::unique_ptr<Medium> createHomogeneousVolume(const MediumInputs& desc) {
   RegionCommon r = readRegionCommon(desc);
-  return std::make_unique<HomogeneousVolume>(desc.volumeToWorld, r.extent, r.c);
+  return std::make_unique<HomogeneousVolume>(desc.toWorld, r.extent, r.c);
 }
 
-std::unique_ptr<Medium> createExponentialVolume(const VolumeDesc& desc) {
+std::unique_ptr<Medium> createExponentialVolume(const MediumInputs& desc) {
   const ParamSet& p = desc.params;
   RegionCommon r = readRegionCommon(desc);
   Float a = p.getOneFloat("a", 1, ValueRange::nonNegative(), desc.loc);
@@ -84,10 +84,10 @@ std::unique_ptr<Medium> createExponentialVolume(const VolumeDesc& desc) {
   Vector3f up = p.getOneVector3f("updir", Vector3f(0, 1, 0));
   if (!(up.lengthSquared() > 0 && up.lengthSquared() < kInfinity))
     fail(desc, "updir", "updir must be a finite, nonzero vector");
-  return std::make_unique<ExponentialVolume>(desc.volumeToWorld, r.extent, r.c, a, b, up);
+  return std::make_unique<ExponentialVolume>(desc.toWorld, r.extent, r.c, a, b, up);
 }
 
-std::unique_ptr<Medium> createVolumeGrid(const VolumeDesc& desc) {
+std::unique_ptr<Medium> createVolumeGrid(const MediumInputs& desc) {
   const ParamSet& p = desc.params;
   RegionCommon r = readRegionCommon(desc);
   int n[3];
@@ -100,22 +100,8 @@ std::unique_ptr<Medium> createVolumeGrid(const VolumeDesc& desc) {
          "density has " + std::to_string(density.size()) +
              " values; nx*ny*nz = " + std::to_string(expected));
   for (Float d : density) p.requireInRange("density", d, ValueRange::nonNegative(), desc.loc);
-  return std::make_unique<VolumeGrid>(desc.volumeToWorld, r.extent, r.c, n[0], n[1], n[2],
+  return std::make_unique<VolumeGrid>(desc.toWorld, r.extent, r.c, n[0], n[1], n[2],
                                       std::move(density));
-}
-
-// ---- Volume integrators (pbrt-v2, lrt draft §16.7)
-
-Float readStepSize(const PluginDesc& desc) {
-  return desc.params.getOneFloat("stepsize", 1, ValueRange::positive(), desc.loc);
-}
-
-std::unique_ptr<VolumeIntegrator> createEmissionIntegrator(const PluginDesc& desc) {
-  return std::make_unique<EmissionIntegrator>(readStepSize(desc));
-}
-
-std::unique_ptr<VolumeIntegrator> createSingleScatteringIntegrator(const PluginDesc& desc) {
-  return std::make_unique<SingleScatteringIntegrator>(readStepSize(desc));
 }
 
 // ---- Named media (pbrt-v3, MakeNamedMedium)
@@ -126,7 +112,7 @@ struct MediumCoefficients {
   Float g;
 };
 
-MediumCoefficients readMediumCoefficients(const MediumDesc& d) {
+MediumCoefficients readMediumCoefficients(const MediumInputs& d) {
   const ParamSet& p = d.params;
   if (p.find("preset"))
     fail(d, "preset",
@@ -148,12 +134,12 @@ MediumCoefficients readMediumCoefficients(const MediumDesc& d) {
   return m;
 }
 
-std::unique_ptr<Medium> createHomogeneousMedium(const MediumDesc& d) {
+std::unique_ptr<Medium> createHomogeneousMedium(const MediumInputs& d) {
   MediumCoefficients m = readMediumCoefficients(d);
   return std::make_unique<HomogeneousMedium>(m.sigmaA, m.sigmaS, m.g);
 }
 
-std::unique_ptr<Medium> createHeterogeneousMedium(const MediumDesc& d) {
+std::unique_ptr<Medium> createHeterogeneousMedium(const MediumInputs& d) {
   const ParamSet& p = d.params;
   MediumCoefficients m = readMediumCoefficients(d);
   int nx = p.getOneInt("nx", 1, ValueRange::atLeast(1), d.loc);
@@ -174,7 +160,7 @@ std::unique_ptr<Medium> createHeterogeneousMedium(const MediumDesc& d) {
   if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z))
     fail(d, p.find("p1") ? "p1" : "p0", "p0 must be below p1 on every axis");
   return std::make_unique<GridDensityMedium>(m.sigmaA, m.sigmaS, m.g, nx, ny, nz,
-                                             std::move(density), p0, p1, d.mediumToWorld);
+                                             std::move(density), p0, p1, d.toWorld);
 }
 
 // ---- The tables
@@ -223,18 +209,6 @@ constexpr VolumeRegionPlugin kRegions[] = {
      createVolumeGrid},
 };
 
-constexpr ParamSpec kStepParams[] = {
-    {"stepsize", "float", "1", "", "positive and finite", kV2, "ray-marching step, world units"}};
-
-constexpr VolumeIntegratorPlugin kVolumeIntegrators[] = {
-    {{"volume integrator", "emission", kV2,
-      "absorption and emission only (lrt draft §16.7; pbrt 2e §16.2)", kStepParams},
-     createEmissionIntegrator},
-    {{"volume integrator", "single", kV2,
-      "single scattering from one light per step (lrt draft §16.7; pbrt 2e §16.3)", kStepParams},
-     createSingleScatteringIntegrator},
-};
-
 constexpr ParamSpec kHomogeneousMediumParams[] = {
     {"preset", "string", "(none)", "", "", kPbrtV3, "measured preset: not supported, an error"},
     {"sigma_a", "spectrum", "0.0011 0.0024 0.014", "", kNonNegative, kPbrtV3,
@@ -270,8 +244,6 @@ constexpr MediumPlugin kMedia[] = {
 }  // namespace
 
 std::span<const VolumeRegionPlugin> volumeRegionPlugins() { return kRegions; }
-
-std::span<const VolumeIntegratorPlugin> volumeIntegratorPlugins() { return kVolumeIntegrators; }
 
 std::span<const MediumPlugin> mediumPlugins() { return kMedia; }
 

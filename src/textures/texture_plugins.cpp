@@ -1,7 +1,8 @@
-#include "assembly/texture_plugins.h"
+#include "textures/texture_plugins.h"
 
 #include <type_traits>
 
+#include "core/image_loader.h"
 #include "core/scene_path.h"
 #include "textures/basic_textures.h"
 #include "textures/checkerboard.h"
@@ -14,7 +15,7 @@ namespace candela {
 
 namespace {
 
-using Context = TextureFactory::Context;
+using Context = TextureInputs;
 
 template <typename T>
 T getOne(const ParamSet& params, const std::string& name, const T& def) {
@@ -25,13 +26,13 @@ T getOne(const ParamSet& params, const std::string& name, const T& def) {
 }
 
 std::unique_ptr<TextureMapping2D> mapping2D(const Context& c) {
-  return createMapping2D(c.params(), c.desc().textureToWorld, c.desc().loc);
+  return createMapping2D(c.params(), c.textureToWorld(), c.location());
 }
 
 // pbrt-v2 and v3 hand the CTM itself to the 3D mapping as its world-to-texture transform, so a
 // Scale 3 before the Texture statement makes the pattern three times finer; scenes are written
 // for that.
-TextureMapping3D mapping3D(const Context& c) { return TextureMapping3D(c.desc().textureToWorld); }
+TextureMapping3D mapping3D(const Context& c) { return TextureMapping3D(c.textureToWorld()); }
 
 template <typename T>
 std::unique_ptr<Texture<T>> createConstant(Context& c) {
@@ -65,7 +66,7 @@ std::unique_ptr<Texture<Spectrum>> createUV(Context& c) {
 template <typename T>
 std::unique_ptr<Texture<T>> createCheckerboard(Context& c) {
   const ParamSet& p = c.params();
-  const FileLoc& loc = c.desc().loc;
+  const FileLoc& loc = c.location();
   int dimension = p.getOneInt("dimension", 2, ValueRange::within(2, 3), loc);
   std::string aa = p.getOneString("aamode", dimension == 2 ? "closedform" : "supersample",
                                   {"closedform", "supersample", "none"}, loc);
@@ -118,14 +119,15 @@ std::unique_ptr<Texture<Spectrum>> createMarble(Context& c) {
 template <typename T>
 std::unique_ptr<Texture<T>> createImageMap(Context& c) {
   const ParamSet& p = c.params();
-  const TextureDesc& d = c.desc();
   // Every parameter is read before the file, so parameter errors come first.
   std::string filename = p.getOneString("filename", "");
   if (filename.empty())
-    throw SceneError(d.loc, "imagemap texture '" + d.textureName + "' needs a \"string filename\"");
-  std::string path = resolveScenePath(filename, p.locationOf("filename", d.loc).file);
+    throw SceneError(c.location(),
+                     "imagemap texture '" + c.textureName() + "' needs a \"string filename\"");
+  std::string path = resolveScenePath(filename, p.locationOf("filename", c.location()).file);
   std::string colorSpace = p.getOneString("colorspace", "");
-  std::string wrapName = p.getOneString("wrap", "repeat", {"repeat", "black", "clamp"}, d.loc);
+  std::string wrapName =
+      p.getOneString("wrap", "repeat", {"repeat", "black", "clamp"}, c.location());
   WrapMode wrap = *parseWrapMode(wrapName);
   Float maxAnisotropy = p.getOneFloat("maxanisotropy", 8);
   bool trilinear = p.getOneBool("trilinear", false);
@@ -136,8 +138,7 @@ std::unique_ptr<Texture<T>> createImageMap(Context& c) {
   if (const ParamItem* g = p.find("gamma")) {
     if (g->type == ParamType::Bool) {
       bool encoded = p.getOneBool("gamma", false);
-      if (colorSpace.empty())
-        colorSpace = encoded ? TextureFactory::kSrgbEncoded : TextureFactory::kStoredLinear;
+      if (colorSpace.empty()) colorSpace = encoded ? kSrgbEncoded : kStoredLinear;
     } else {
       gamma = p.getOneFloat("gamma", 1);
     }
