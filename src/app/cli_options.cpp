@@ -86,14 +86,24 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   app.add_option("--reference", o->reference,
                  "Reference EXR: report the error against it after each pass")
       ->check(CLI::ExistingFile);
-  app.add_option("--error-log", o->errorLog,
-                 "Append seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95 after each pass "
-                 "(passes of 1, 2, 4, ... spp)");
+  app.add_option(
+      "--error-log", o->errorLog,
+      "Append seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95,relmse_predicted,samples "
+      "after each pass (passes of 1, 2, 4, ... spp)");
   app.add_option("--time-budget", o->timeBudget, "Stop before a pass would end past this (s)")
       ->check(CLI::PositiveNumber);
   app.add_option("--target-error", o->targetError,
                  "Stop once relMSE is below this (estimated from the image's own variance "
                  "without --reference)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--noise-threshold", o->noiseThreshold,
+                 "Adaptive sampling: a pixel stops taking samples once its relative error, "
+                 "estimated from its own samples, is at most this (0.1 aims at an image relMSE "
+                 "of about 0.01); the scene's samples per pixel stay the most any pixel takes")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--adaptive-min-samples", o->adaptiveMinSamples,
+                 "Adaptive sampling: the samples every pixel takes before its noise is judged "
+                 "(default 16)")
       ->check(CLI::PositiveNumber);
   std::string tile, frames, sampleRange;
   app.add_option("--tile", tile,
@@ -156,6 +166,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
     return usage("--frames " + frames + ": expected A-B (or A) with 0 <= A <= B");
   if (!sampleRange.empty() && !(o->sampleRange = parseIndexRange(sampleRange)))
     return usage("--sample-range " + sampleRange + ": expected A-B (or A) with 0 <= A <= B");
+  if (o->adaptiveMinSamples > 0 && !(o->noiseThreshold > 0))
+    return usage("--adaptive-min-samples needs --noise-threshold");
   // A stop condition per piece would give the pieces different sample counts.
   if ((o->tile || o->sampleRange) && o->progressive())
     return usage(std::string(o->tile ? "--tile" : "--sample-range") +

@@ -36,9 +36,13 @@ struct CliOptions {
   std::string toneMap;     // preview tone map, overriding the scene's ToneMap statement
   // Error against run time: render in doubling passes, measure after each.
   std::string reference;   // EXR to compare with
-  std::string errorLog;    // CSV: seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95
+  std::string errorLog;    // CSV: seconds,spp,...,relmse_ci95,relmse_predicted,samples
   double timeBudget = 0;   // seconds; 0 = none
   double targetError = 0;  // relMSE; 0 = none
+  // Adaptive sampling: a pixel stops once its estimated relative error is at most this (0 = off),
+  // after at least adaptiveMinSamples (0 = the default).
+  double noiseThreshold = 0;
+  int adaptiveMinSamples = 0;
   // A piece of a render split for a farm (`candela merge` assembles them): one tile of a grid,
   // some of the scene's frames, some of each pixel's samples.
   std::optional<TileIndex> tile;

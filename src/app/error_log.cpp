@@ -26,8 +26,9 @@ ErrorLog::~ErrorLog() {
 
 void ErrorLog::append(const PassReport& pass, const ErrorMetrics& m) {
   unsigned long long rays = pass.total.rays.intersectionRays + pass.total.rays.shadowRays;
-  std::fprintf(file_, "%.6f,%d,%llu,%.9g,%.9g,%.9g,%.9g,%.9g\n", pass.seconds, pass.spp, rays,
-               m.mse, m.relmse, m.rmse, m.maxAbsError, m.relmseCi95);
+  std::fprintf(file_, "%.6f,%d,%llu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%llu\n", pass.seconds, pass.spp,
+               rays, m.mse, m.relmse, m.rmse, m.maxAbsError, m.relmseCi95, m.relmseFromVariance,
+               (unsigned long long)pass.total.samples);
   // Flushed per row, so a log of an interrupted run is still readable.
   if (std::fflush(file_) != 0) throw FileError(path_, "write failed");
 }

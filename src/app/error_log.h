@@ -11,7 +11,8 @@ namespace candela {
 
 class ErrorLog {
  public:
-  static constexpr const char* kHeader = "seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95";
+  static constexpr const char* kHeader =
+      "seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95,relmse_predicted,samples";
   // Opens for appending; writes the header when the file is new or empty. Throws FileError.
   explicit ErrorLog(const std::string& path);
   ~ErrorLog();

@@ -34,10 +34,19 @@ void printWarning(const FileLoc& loc, const std::string& message) {
   std::fprintf(stderr, "%s: warning: %s\n", loc.str().c_str(), message.c_str());
 }
 
+// The Film's adaptive sampling with the command line's options over it.
+AdaptiveSampling adaptiveSampling(const RenderJob& job, const CliOptions& cli) {
+  AdaptiveSampling a = job.adaptive;
+  if (cli.noiseThreshold > 0) a.noiseThreshold = cli.noiseThreshold;
+  if (cli.adaptiveMinSamples > 0) a.minSamples = cli.adaptiveMinSamples;
+  return a;
+}
+
 // Doubling passes with the error after each (against --reference, or estimated from the image's
 // own variance), the stop conditions, and what the EXR metadata should say about them.
 ProgressiveResult renderProgressively(RenderJob& job, const CliOptions& cli,
-                                      const RenderOptions& options, ImageMetadata* metadata) {
+                                      const RenderOptions& options,
+                                      const AdaptiveSampling& adaptive, ImageMetadata* metadata) {
   std::optional<ImageBuffer> reference;
   if (!cli.reference.empty()) reference = readImage(cli.reference);
   std::unique_ptr<ErrorLog> log;
@@ -45,6 +54,7 @@ ProgressiveResult renderProgressively(RenderJob& job, const CliOptions& cli,
   ErrorMetrics last;
   ProgressiveOptions po;
   po.render = options;
+  po.adaptive = adaptive;
   po.timeBudget = cli.timeBudget;
   po.afterPass = [&](const PassReport& pass) {
     try {
@@ -109,6 +119,13 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
         "--target-error without --reference estimates the error from each pixel's variance, "
         "which this scene's integrator does not keep (its light is splatted or gathered from "
         "photons): give --reference, or --time-budget");
+  const AdaptiveSampling adaptive = adaptiveSampling(job, cli);
+  // Each pixel's decisions need all of its earlier samples.
+  if (adaptive.enabled() && cli.sampleRange)
+    throw std::runtime_error(
+        "--sample-range cannot be combined with adaptive sampling (--noise-threshold or the "
+        "Film's \"noisethreshold\"): a pixel's decisions need all of its earlier samples "
+        "(split the render with --tile instead)");
   if (cli.sampleRange) checkSampleRange(job, *cli.sampleRange);
   if (cli.tile && cli.tile->count > 1 && !cli.quiet && pixelLight != PixelLight::OwnSamples)
     std::fprintf(stderr,
@@ -129,11 +146,19 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   ImageMetadata extra;
   ProgressiveResult pr;
   if (cli.progressive()) {
-    pr = renderProgressively(job, cli, options, &extra);
+    pr = renderProgressively(job, cli, options, adaptive, &extra);
   } else {
     ProgressiveOptions po;
     po.render = options;
+    po.adaptive = adaptive;
     pr = renderJob(job, po);
+  }
+  if (adaptive.enabled()) {
+    extra.floats.push_back({"candela:noiseThreshold", float(adaptive.noiseThreshold)});
+    if (!cli.progressive()) {  // else renderProgressively records them
+      extra.strings.push_back({"candela:stopReason", stopReasonName(pr.reason)});
+      extra.ints.push_back({"candela:passes", pr.passes});
+    }
   }
   const RenderResult& result = pr.total;
   const int spp = pr.spp;

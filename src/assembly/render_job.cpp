@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "accel/aggregate_factory.h"
 #include "accel/embree/embree_aggregate.h"
@@ -318,6 +319,9 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
                        options.aovs);
   job.exrCompression = filmParams.getOneString("compression", "zip");
   job.exrHalf = filmParams.getOneBool("half", false);
+  // Checked by createFilm.
+  job.adaptive.noiseThreshold = filmParams.getOneFloat("noisethreshold", 0);
+  job.adaptive.minSamples = filmParams.getOneInt("adaptiveminsamples", 0);
   reportUnused(PluginDesc{filmDesc.name, filmParams, filmDesc.loc}, warn);
   reportUnused(filterDesc, warn);
   CameraDesc camDesc = desc.camera;
@@ -455,6 +459,13 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
 }
 
 ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options) {
+  // Adaptive sampling judges a pixel's noise from its own samples; splatted light and whole-image
+  // renderers' pixels are not in them (and those integrators take no adaptive passes).
+  if (options.adaptive.enabled() && job.integrator->pixelLight() != PixelLight::OwnSamples)
+    throw std::runtime_error(
+        "adaptive sampling (--noise-threshold or the Film's \"noisethreshold\") judges each "
+        "pixel's noise from its own samples, which this scene's integrator does not keep (its "
+        "light is splatted or gathered from photons)");
   // The passes' clock starts after the preprocess; reports and the budget count it too.
   ProgressiveOptions po = options;
   po.timeBudget = std::max(0.0, options.timeBudget - job.preprocessSeconds);

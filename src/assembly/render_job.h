@@ -102,6 +102,9 @@ struct RenderJob {
   // The Film's output parameters ("compression", "half"); command-line flags override them.
   std::string exrCompression = "zip";
   bool exrHalf = false;
+  // The Film's "noisethreshold" and "adaptiveminsamples"; --noise-threshold and
+  // --adaptive-min-samples override them.
+  AdaptiveSampling adaptive;
   std::unique_ptr<Camera> camera;
   std::unique_ptr<Sampler> sampler;
   // What renders the image: a pixel-sample integrator (path, bdpt, ...) or one of the whole
@@ -114,6 +117,8 @@ struct RenderJob {
 };
 
 // Renders the job with its integrator (Integrator::render), the preprocess counted as render time.
+// Throws std::runtime_error for adaptive sampling with an integrator whose pixels do not hold
+// all of their light (PixelLight other than OwnSamples).
 ProgressiveResult renderJob(RenderJob& job, const ProgressiveOptions& options);
 
 RenderJob buildRenderJob(const SceneDescription& desc, const BuildOptions& options,

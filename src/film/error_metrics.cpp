@@ -94,6 +94,14 @@ ErrorMetrics estimateFromVariance(const Film& film) {
   return m;
 }
 
+double estimatePixelRelMse(const Film& film, const Point2i& pixel) {
+  if (film.pixelSampleCount(pixel) < 2) return kInfinity;
+  Spectrum v = film.pixelValue(pixel), var = film.pixelVariance(pixel);
+  double sum = 0;
+  for (int c = 0; c < 3; ++c) sum += double(var[c]) / (double(v[c]) * v[c] + kRelMseEpsilon);
+  return sum / 3;
+}
+
 namespace {
 
 // The R, G, B channel indices of an image, or a clear refusal naming its role.

@@ -33,6 +33,11 @@ ErrorMetrics compareToReference(const Film& film, const ImageBuffer& reference);
 // while any pixel has fewer than two samples.
 ErrorMetrics estimateFromVariance(const Film& film);
 
+// One pixel's relMSE as its own samples predict it: the mean over R, G, B of var / (value^2 +
+// kRelMseEpsilon), the pixel's value standing in for the reference. Infinite with fewer than two
+// samples. Its square root is the pixel's noise as adaptive sampling measures it.
+double estimatePixelRelMse(const Film& film, const Point2i& pixel);
+
 // Two finished images of one size (R, G, B looked up by name), as `candela compare` measures
 // renderers against each other: relMSE against the mean of one or two references; with two
 // (independent renders of the same scene) also their own noise, the relMSE their mean adds to

@@ -35,7 +35,10 @@ std::unique_ptr<Film> createImageFilm(const ParamSet& params, std::unique_ptr<Fi
       params.getOneFloat("maxsampleluminance", kInfinity, ValueRange::greaterThan(0), loc));
   film->setDiagonal(params.getOneFloat("diagonal", 35, ValueRange::positive(), loc));
   // candela's output parameters "aovs", "compression" and "half" are read by the render job
-  // (assembly/render_job.cpp), which joins them with --aov, --compression and --half.
+  // (assembly/render_job.cpp), which joins them with --aov, --compression and --half; so are
+  // adaptive sampling's, checked here.
+  params.getOneFloat("noisethreshold", 0, ValueRange::nonNegative(), loc);
+  params.getOneInt("adaptiveminsamples", 0, ValueRange::atLeast(0), loc);
   return film;
 }
 
@@ -57,6 +60,11 @@ constexpr ParamSpec kImageParams[] = {
      "comma-separated AOV layers to write (albedo, normal, ...)"},
     {"compression", "string", "zip", "", "", kCandela, "EXR compression (--compression wins)"},
     {"half", "bool", "false", "", "", kCandela, "write half floats (or --half)"},
+    {"noisethreshold", "float", "0", "", "non-negative and finite", kCandela,
+     "adaptive sampling: a pixel stops once its estimated relative error is at most this (0: "
+     "off; or --noise-threshold)"},
+    {"adaptiveminsamples", "integer", "0", "", "at least 0", kCandela,
+     "adaptive sampling: samples every pixel takes first (0: 16; or --adaptive-min-samples)"},
 };
 
 const FilmPlugin kFilms[] = {

@@ -12,6 +12,7 @@
 #include "core/interrupt.h"
 #include "core/parallel_for.h"
 #include "core/progress.h"
+#include "integrators/adaptive_render.h"
 #include "integrators/aov_sampler.h"
 #include "integrators/progressive_render.h"
 
@@ -29,16 +30,13 @@ void keepFirst(std::optional<PixelSampleIndex>& first, const std::optional<Pixel
   if (s && (!first || *s < *first)) first = s;
 }
 
-// The groups of a pixel's samples whose camera rays are traced together: samples [8 g, 8 g + 8),
-// eight for the width of Embree's AVX2 packets.
-constexpr int kCameraGroup = 8;
 struct CameraGroup {
-  std::array<CameraSample, kCameraGroup> cs;
-  std::array<RayDifferential, kCameraGroup> ray;
-  std::array<Float, kCameraGroup> weight;
-  std::array<Ray, kCameraGroup> traced;  // the rays of positive weight, in order
-  std::array<SurfaceInteraction, kCameraGroup> hits;
-  std::array<bool, kCameraGroup> hit;
+  std::array<CameraSample, kCameraRayGroup> cs;
+  std::array<RayDifferential, kCameraRayGroup> ray;
+  std::array<Float, kCameraRayGroup> weight;
+  std::array<Ray, kCameraRayGroup> traced;  // the rays of positive weight, in order
+  std::array<SurfaceInteraction, kCameraRayGroup> hits;
+  std::array<bool, kCameraRayGroup> hit;
 };
 }  // namespace
 
@@ -84,6 +82,9 @@ RenderResult PixelSampleIntegrator::renderSamples(const RenderInputs& in, Film& 
 ProgressiveResult PixelSampleIntegrator::render(const RenderInputs& in, Film& film,
                                                 const ProgressiveOptions& options) {
   const int spp = in.sampler.samplesPerPixel();
+  if (options.adaptive.enabled())  // renderJob has checked that pixelLight() is OwnSamples
+    return renderAdaptive([&](const RenderOptions& pass) { return renderSamples(in, film, pass); },
+                          film, spp, options);
   if (options.afterPass || options.timeBudget > 0)
     return renderProgressive(
         [&](const RenderOptions& pass) { return renderSamples(in, film, pass); }, spp, options);
@@ -227,7 +228,7 @@ RenderResult PixelSampleIntegrator::renderPixelSamples(const RenderInputs& in, F
     // it (ties between surfaces), so the group must not depend on the range.
     auto takeGroup = [&](const Point2i& pixel, int group, int s, int e) {
       CameraGroup& b = state.group;
-      const int g0 = group * kCameraGroup, n = std::min(spp, g0 + kCameraGroup) - g0;
+      const int g0 = group * kCameraRayGroup, n = std::min(spp, g0 + kCameraRayGroup) - g0;
       int traced = 0;
       for (int i = 0; i < n; ++i) {
         sampler->startPixelSample(pixel, g0 + i);
@@ -263,6 +264,7 @@ RenderResult PixelSampleIntegrator::renderPixelSamples(const RenderInputs& in, F
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         Point2i pixel(x, y);
+        if (options.pixels && !options.pixels->contains(pixel)) continue;
         if (adaptive) {
           // The first samples decide whether the pixel gets the rest (pbrt-v2's adaptive
           // sampler); both ranges are taken in index order, so the image stays a function of the
@@ -273,7 +275,7 @@ RenderResult PixelSampleIntegrator::renderPixelSamples(const RenderInputs& in, F
             for (int s = initial; s < spp; ++s) takeSample(pixel, s, false);
         } else if (groupCameraRays) {
           for (int s = s0; s < s1;) {
-            int group = s / kCameraGroup, e = std::min(s1, (group + 1) * kCameraGroup);
+            int group = s / kCameraRayGroup, e = std::min(s1, (group + 1) * kCameraRayGroup);
             takeGroup(pixel, group, s, e);
             s = e;
           }

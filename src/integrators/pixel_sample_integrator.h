@@ -41,6 +41,10 @@ class FirstHitRadiance {
   ~FirstHitRadiance() = default;
 };
 
+// The groups of a pixel's samples whose camera rays are traced together: samples [8 g, 8 g + 8),
+// eight for the width of Embree's AVX2 packets. A pass that ends inside a group traces it whole.
+inline constexpr int kCameraRayGroup = 8;
+
 class PixelSampleIntegrator : public Integrator {
  public:
   // The sampler's samples per pixel: in doubling passes of sample indices (progressive_render.h)

@@ -5,11 +5,23 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "core/vector.h"
 #include "scene/scene.h"
 
 namespace candela {
+
+// The pixels a pass takes samples in: adaptive sampling's pixels that have not yet converged.
+struct PixelMask {
+  Bounds2i bounds;
+  std::vector<uint8_t> active;  // row by row over bounds; nonzero: take samples
+  bool contains(const Point2i& p) const {
+    return bounds.inside(p) &&
+           active[size_t(p.y - bounds.pMin.y) * size_t(bounds.pMax.x - bounds.pMin.x) +
+                  size_t(p.x - bounds.pMin.x)] != 0;
+  }
+};
 
 struct RenderOptions {
   int nThreads = 0;    // 0: all cores
@@ -20,6 +32,8 @@ struct RenderOptions {
   // every pixel's samples in the same order as rendering [0, b): the same bits.
   int firstSample = 0;
   int endSample = -1;
+  // Non-null: only these pixels take the pass's samples (the rest keep what they have).
+  const PixelMask* pixels = nullptr;
 };
 
 // A camera sample: its pixel and index there (what --cropwindow and --spp reproduce).
@@ -48,7 +62,7 @@ struct RenderResult {
   void add(const RenderResult& other);
 };
 
-enum class StopReason { Completed, TimeBudget, TargetError };
+enum class StopReason { Completed, TimeBudget, TargetError, NoiseThreshold };
 const char* stopReasonName(StopReason r);
 
 struct PassReport {
@@ -58,8 +72,21 @@ struct PassReport {
   RenderResult total;  // summed over the passes so far
 };
 
+// Noise-driven adaptive sampling (as Cycles' adaptive_threshold and adaptive_min_samples): every
+// pixel takes minSamples, then passes of more samples go only to the pixels whose estimated
+// relative error, sqrt of the mean over R, G, B of var / (value^2 + kRelMseEpsilon) from the
+// pixel's own samples, is still above noiseThreshold. A pixel's decisions read only its own
+// samples, so the image stays a function of (scene, spp, seed) for any thread count, tile size,
+// crop window or farm tile. Noise threshold t aims at an image relMSE of about t^2.
+struct AdaptiveSampling {
+  double noiseThreshold = 0;  // 0: off
+  int minSamples = 0;         // 0: the default, 16 (at most the samples per pixel)
+  bool enabled() const { return noiseThreshold > 0; }
+};
+
 struct ProgressiveOptions {
-  RenderOptions render;   // firstSample/endSample are set per pass
+  RenderOptions render;  // firstSample/endSample are set per pass
+  AdaptiveSampling adaptive;
   double timeBudget = 0;  // seconds; 0 = none. A pass is not started when it is predicted to end
                           // past the budget (a doubling pass takes about as long as all before)
   // Called after each pass; returning false stops the render (an error target reached).

@@ -8,7 +8,7 @@ scene=$src/scenes/cornell-box/cornell-box.pbrt
 "$candela" "$scene" --quick --spp 16 --seed 9 -o ref.exr --preview none -q
 "$candela" "$scene" --quick --spp 8 -o run.exr --reference ref.exr --error-log log.csv \
   --preview none -q
-head -1 log.csv | grep -qx 'seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95' ||
+head -1 log.csv | grep -qx 'seconds,spp,rays,mse,relmse,rmse,maxerr,relmse_ci95,relmse_predicted,samples' ||
   { echo "FAIL: header"; cat log.csv; exit 1; }
 [ "$(tail -n +2 log.csv | cut -d, -f2 | tr '\n' ' ')" = "1 2 4 8 " ] ||
   { echo "FAIL: passes"; cat log.csv; exit 1; }
@@ -44,4 +44,22 @@ for integrator in 'SurfaceIntegrator "sppm"' 'Integrator "bdpt"'; do
   grep -q "give --reference" nov.txt || { echo "FAIL: $integrator message"; cat nov.txt; exit 1; }
   [ ! -e nov.exr ] || { echo "FAIL: $integrator wrote an image"; exit 1; }
 done
+# Adaptive sampling: --noise-threshold stops converged pixels early, says so in the EXR, logs the
+# samples it took (fewer than spp x pixels), and refuses what it cannot judge.
+"$candela" "$scene" --quick --spp 256 --noise-threshold 0.2 --reference ref.exr \
+  --error-log adaptive.csv -o a.exr --preview none -q
+grep -a -q "candela:noiseThreshold" a.exr || { echo "FAIL: threshold not in EXR"; exit 1; }
+awk -F, 'END { exit !($2 == 256 && $10 < 256 * 64 * 64) }' adaptive.csv ||
+  { echo "FAIL: adaptive samples"; cat adaptive.csv; exit 1; }
+"$candela" "$scene" --quick --spp 4096 --noise-threshold 100 -o h.exr --preview none -q
+grep -a -q "noise threshold" h.exr || { echo "FAIL: stop reason noise threshold"; exit 1; }
+if "$candela" "$scene" --quick --adaptive-min-samples 8 -o x.exr --preview none -q 2> x.txt; then
+  echo "FAIL: --adaptive-min-samples without --noise-threshold"; exit 1
+fi
+sed 's/^SurfaceIntegrator .*/Integrator "bdpt"/' "$scene" > bd.pbrt
+if "$candela" bd.pbrt --quick --spp 4 --noise-threshold 0.1 -o bd.exr --preview none 2> bd.txt; then
+  echo "FAIL: bdpt accepted --noise-threshold"; exit 1
+fi
+grep -q "its own samples" bd.txt || { echo "FAIL: bdpt message"; cat bd.txt; exit 1; }
+[ ! -e bd.exr ] || { echo "FAIL: bdpt wrote an image"; exit 1; }
 echo "error log: ok"

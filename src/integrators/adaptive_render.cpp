@@ -1,0 +1,52 @@
+#include "integrators/adaptive_render.h"
+
+#include <algorithm>
+
+#include "film/error_metrics.h"
+#include "integrators/pixel_sample_integrator.h"
+
+namespace candela {
+
+namespace {
+constexpr int kDefaultMinSamples = 16;
+int roundUpToGroup(int n) { return (n + kCameraRayGroup - 1) / kCameraRayGroup * kCameraRayGroup; }
+}  // namespace
+
+std::vector<int> adaptivePassEnds(int samplesPerPixel, const AdaptiveSampling& adaptive) {
+  const int spp = std::max(1, samplesPerPixel);
+  const int minSamples = adaptive.minSamples > 0 ? adaptive.minSamples : kDefaultMinSamples;
+  std::vector<int> ends{std::min(spp, minSamples)};
+  const int step = roundUpToGroup(minSamples);
+  while (ends.back() < spp) {
+    const int done = ends.back();
+    ends.push_back(std::min(spp, done + std::max(step, roundUpToGroup(done / 8))));
+  }
+  return ends;
+}
+
+ProgressiveResult renderAdaptive(const RenderPass& renderPass, const Film& film,
+                                 int samplesPerPixel, const ProgressiveOptions& options) {
+  const double limit = options.adaptive.noiseThreshold * options.adaptive.noiseThreshold;
+  PixelMask mask;
+  mask.bounds = film.pixelBounds();
+  const Bounds2i& b = mask.bounds;
+  const int width = std::max(0, b.pMax.x - b.pMin.x), height = std::max(0, b.pMax.y - b.pMin.y);
+  mask.active.assign(size_t(width) * size_t(height), 1);
+  // A pixel stops for good once its noise is at the threshold: no later sample changes it.
+  auto continuingShare = [&] {
+    size_t active = 0;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        uint8_t& on = mask.active[size_t(y) * size_t(width) + size_t(x)];
+        if (on) on = estimatePixelRelMse(film, Point2i(b.pMin.x + x, b.pMin.y + y)) > limit;
+        active += on;
+      }
+    return mask.active.empty() ? 0.0 : double(active) / double(mask.active.size());
+  };
+  ProgressiveOptions po = options;
+  po.render.pixels = &mask;
+  return renderPasses(renderPass, adaptivePassEnds(samplesPerPixel, options.adaptive), po,
+                      continuingShare);
+}
+
+}  // namespace candela
