@@ -5,6 +5,7 @@
 
 #include "accel/aggregate_factory.h"
 #include "assembly/plugin_registry.h"
+#include "lights/light_sampler.h"
 #include "parser/scene_dialect.h"
 
 namespace candela {
@@ -45,6 +46,11 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
   app.add_option("--accel", o->accelerator,
                  "Aggregate, overriding the scene's Accelerator (default: embree)")
       ->check(CLI::IsMember(acceleratorNames()));
+  app.add_option("--light-sampler", o->lightSampler,
+                 "How path, volpath and bdpt choose the light each sample goes to, overriding "
+                 "the scene's lightsamplestrategy: uniform, power, spatial or bvh (a light tree)")
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(kLightSampleStrategyNames),
+                                                     std::end(kLightSampleStrategyNames))));
   app.add_option("--subdiv", o->subdiv,
                  "Code that refines loopsubdiv shapes: book (ours, default) or opensubdiv; the "
                  "surface is the same")

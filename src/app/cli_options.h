@@ -23,6 +23,7 @@ struct CliOptions {
   std::optional<Bounds2f> cropWindow;
   bool quick = false, quiet = false, verbose = false, stats = false;
   std::string accelerator;      // overrides the scene's Accelerator; "" = the scene's (embree)
+  std::string lightSampler;     // overrides the integrator's lightsamplestrategy; "" = the scene's
   std::string subdiv = "book";  // the code that refines "loopsubdiv": book or opensubdiv
   bool half = false;
   std::string dialect;                      // "" (detect), "pbrt-v2" or "pbrt-v3": material models

@@ -95,6 +95,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   if (cli.tile) build.tileIndex = cli.tile->index, build.tileCount = cli.tile->count;
   build.quick = cli.quick;
   build.accelerator = cli.accelerator;
+  build.lightSampler = cli.lightSampler;
   build.compatibility = cli.compatibility();
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
   build.colorMatrix = writer.workingSpaceMatrix();

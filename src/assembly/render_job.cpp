@@ -14,6 +14,7 @@
 #include "assembly/plugin_factories.h"
 #include "assembly/shape_factory.h"
 #include "assembly/volume_factory.h"
+#include "integrators/integrator_plugins.h"
 #include "integrators/tile_grid.h"
 #include "parser/scene_dialect.h"
 #include "parser/working_color_space.h"
@@ -62,6 +63,34 @@ ParamSet withInt(const ParamSet& params, const std::string& name, int value, con
   item.ints = {value};
   p.add(item);
   return p;
+}
+
+// The integrator statement with --light-sampler in place of its lightsamplestrategy, for the
+// integrators that read one; a warning for the others.
+PluginDesc withLightSampler(const PluginDesc& integrator, const std::string& strategy,
+                            const WarningSink& warn) {
+  if (strategy.empty()) return integrator;
+  bool reads = false;
+  for (const IntegratorPlugin& plugin : integratorPlugins())
+    if (plugin.spec.name == integrator.name)
+      for (const ParamSpec& param : plugin.spec.params)
+        reads |= param.name == "lightsamplestrategy";
+  if (!reads) {
+    if (warn)
+      warn(integrator.loc,
+           "--light-sampler is ignored: integrator '" + integrator.name +
+               "' does not choose lights by a strategy (path, volpath and bdpt do)");
+    return integrator;
+  }
+  PluginDesc d = integrator;
+  ParamItem item;
+  item.type = ParamType::String;
+  item.name = "lightsamplestrategy";
+  item.typeName = "string";
+  item.loc = FileLoc{"--light-sampler", 0, 0};
+  item.strings = {strategy};
+  d.params.add(item);
+  return d;
 }
 
 PluginDesc orDefault(const PluginDesc& d, const std::string& name) {
@@ -353,9 +382,10 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
                               samplerDesc.loc, samplerWarn, samplerDefaults);
   reportUnused(samplerDesc, warn);
   PluginDesc integratorDesc =
-      !desc.integrator.name.empty()
-          ? desc.integrator
-          : orDefault(desc.surfaceIntegrator, v3 ? "path" : "directlighting");
+      withLightSampler(!desc.integrator.name.empty()
+                           ? desc.integrator
+                           : orDefault(desc.surfaceIntegrator, v3 ? "path" : "directlighting"),
+                       options.lightSampler, warn);
   WholeImageContext irc{job.camera.get(), job.sampler.get(),   options.seed,
                         options.quick,    options.sppOverride, job.film->pixelBounds()};
   job.integrator = createWholeImageIntegrator(integratorDesc, desc.renderer, irc);

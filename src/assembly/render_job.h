@@ -47,6 +47,8 @@ struct BuildOptions {
   int tileIndex = 0, tileCount = 0;
   bool quick = false;       // quarter resolution, an eighth of the samples
   std::string accelerator;  // overrides the Accelerator statement ("" = the scene's)
+  // Overrides the integrator's "lightsamplestrategy" (path, volpath, bdpt; "" = the scene's).
+  std::string lightSampler;
   // The dialect (--dialect; default: detected) and every pbrt-compatibility switch.
   CompatibilityProfile compatibility;
   unsigned aovs = 0;  // AovFlag bits, added to the Film's "aovs"

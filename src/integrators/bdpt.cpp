@@ -86,7 +86,12 @@ std::vector<NamedImage> BdptIntegrator::extraImages(const Film& film) const {
 void BdptIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
   lights_ = scene.lights();
   scene.worldBound().boundingSphere(&sceneCenter_, &sceneRadius_);
-  lightSampler_ = createLightSampler(lightStrategy_, scene.lights(), scene.worldBound());
+  bool tree = lightStrategy_ == LightSampleStrategy::Bvh;
+  lightSampler_ = createLightSampler(tree ? LightSampleStrategy::Power : lightStrategy_,
+                                     scene.lights(), scene.worldBound());
+  vertexLightSampler_.reset();
+  if (tree)
+    vertexLightSampler_ = createLightSampler(lightStrategy_, scene.lights(), scene.worldBound());
 }
 
 Float BdptIntegrator::lightPdf(const Light* light) const {
@@ -318,7 +323,10 @@ Spectrum BdptIntegrator::connect(const Scene& scene, PathVertex* light, PathVert
     Point2f uLight = ctx.sampler.get2D();
     if (!pt.connectible() || lights_.empty()) return L;
     Float pmf = 0;
-    const Light* l = lightSampler_->sample(lightReference_, uChoice, &pmf);
+    const Light* l = vertexLightSampler_
+                         ? vertexLightSampler_->sample(LightSampleContext(pt.it), uChoice, &pmf)
+                         : lightSampler_->sample(lightReference_, uChoice, &pmf);
+    if (!l) return L;
     Vector3f wi;
     Float pdf = 0;
     VisibilityTester vis;

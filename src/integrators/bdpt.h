@@ -28,7 +28,10 @@ class BdptIntegrator : public PixelSampleIntegrator {
   // lightStrategy: how the light a light subpath starts from is chosen (pbrt-v3's
   // lightsamplestrategy, "power" by default); "spatial" takes the distribution of the voxel that
   // holds lightReference (the camera's position: pbrt-v3 looks it up at each sample's camera
-  // vertex, the same voxel but for lenses wider than one).
+  // vertex, the same voxel but for lenses wider than one); "bvh" chooses the light subpath's light
+  // by power and the light a camera vertex connects to (s = 1) by the light tree at that vertex
+  // (the MIS weights keep the subpath's choice: any one density in them for every strategy makes
+  // them sum to one, and each strategy divides by the density it sampled with).
   BdptIntegrator(const CameraImportance& camera, int maxDepth, LightSampleStrategy lightStrategy,
                  Visualize visualize = Visualize::None, const Bounds2i& pixelBounds = {},
                  const Point3f& lightReference = Point3f(0, 0, 0));
@@ -110,6 +113,7 @@ class BdptIntegrator : public PixelSampleIntegrator {
   Point3f lightReference_;
   std::vector<const Light*> lights_;
   std::unique_ptr<LightSampler> lightSampler_;
+  std::unique_ptr<LightSampler> vertexLightSampler_;  // "bvh": the s = 1 choice; else null
   Point3f sceneCenter_{0, 0, 0};
   Float sceneRadius_ = 0;
   Visualize visualize_;

@@ -75,12 +75,13 @@ std::unique_ptr<PixelSampleIntegrator> createIgiIntegrator(const IntegratorInput
 
 namespace {
 
-// A light sample strategy parameter (lightsamplestrategy: uniform, power or spatial), a located
-// SceneError for any other name.
+// A light sample strategy parameter (lightsamplestrategy: uniform, power, spatial or bvh), a
+// located SceneError for any other name.
 LightSampleStrategy lightStrategyParam(const IntegratorInputs& desc, const char* name,
                                        const char* byDefault) {
-  std::string strategy =
-      desc.params.getOneString(name, byDefault, {"uniform", "power", "spatial"}, desc.loc);
+  std::string strategy = desc.params.getOneString(
+      name, byDefault, {std::begin(kLightSampleStrategyNames), std::end(kLightSampleStrategyNames)},
+      desc.loc);
   return *lightSampleStrategyNamed(strategy);
 }
 

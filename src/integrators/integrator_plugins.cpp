@@ -33,7 +33,7 @@ constexpr ParamSpec kLightStrategy{"lightsamplestrategy",
                                    "string",
                                    "uniform",
                                    "spatial",
-                                   "one of uniform, power, spatial",
+                                   "one of uniform, power, spatial, bvh",
                                    kPbrtV3,
                                    "how each light sample chooses its light"};
 
@@ -80,10 +80,10 @@ constexpr ParamSpec kBdpt[] = {
      "also write one image per strategy (s, t)"},
     {"visualizeweights", "bool", "false", "", "", kPbrtV3,
      "also write the MIS-weighted image per strategy (wins over visualizestrategies)"},
-    {"lightsamplestrategy", "string", "power", "", "one of uniform, power, spatial", kPbrtV3,
+    {"lightsamplestrategy", "string", "power", "", "one of uniform, power, spatial, bvh", kPbrtV3,
      "how light subpaths choose their light"},
     // Read only when lightsamplestrategy is absent.
-    {"lightsampler", "string", "(lightsamplestrategy)", "", "one of uniform, power, spatial",
+    {"lightsampler", "string", "(lightsamplestrategy)", "", "one of uniform, power, spatial, bvh",
      kCandela, "candela's earlier name for lightsamplestrategy"},
 };
 

@@ -83,7 +83,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
       bool weighted = bounces > 0 && !specularBounce;
       auto misWeight = [&](const Light& light) {
         if (!weighted) return Float(1);
-        Float choicePdf = lightSampler_ ? lightSampler_->pmf(previous.p, light) : lightChoicePdf;
+        Float choicePdf = lightSampler_ ? lightSampler_->pmf(LightSampleContext(previous), light)
+                                        : lightChoicePdf;
         Float lightPdf = choicePdf * light.pdfLi(previous, ray.d);
         return powerHeuristic(1, scatteringPdf, 1, lightPdf);
       };
@@ -136,7 +137,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
         l += beta * sampleOneLightAgainstBSDF(isect, *bsdf, scene, ctx, uChoice, uLight);
       } else {
         Float choicePdf = 0;
-        if (const Light* light = lightSampler_->sample(isect.p, uChoice, &choicePdf))
+        if (const Light* light =
+                lightSampler_->sample(LightSampleContext(isect), uChoice, &choicePdf))
           l += beta * sampleLightAgainstBSDF(isect, *bsdf, *light, choicePdf, scene, ctx, uLight);
       }
     }

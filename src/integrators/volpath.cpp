@@ -82,8 +82,9 @@ Spectrum shadowTransmittance(const Interaction& from, const Interaction& to, con
 }
 
 // The probability with which sampleOneLight chooses light at p.
-Float choiceProbability(const PathState& s, const Point3f& p, const Light& light) {
-  return s.lightSampler ? s.lightSampler->pmf(p, light) : 1 / Float(s.scene.lights().size());
+Float choiceProbability(const PathState& s, const Interaction& at, const Light& light) {
+  return s.lightSampler ? s.lightSampler->pmf(LightSampleContext(at), light)
+                        : 1 / Float(s.scene.lights().size());
 }
 
 // The BSDF or phase strategy's share of the direct light: the emission that the ray leaving
@@ -97,7 +98,7 @@ Float choiceProbability(const PathState& s, const Point3f& p, const Light& light
 Spectrum emissionAlong(const Interaction& from, const Vector3f& w, const Medium* medium,
                        Float scatteringPdf, PathState& s) {
   auto weighted = [&](const Light& light, const Spectrum& le) {
-    Float lightPdf = choiceProbability(s, from.p, light) * light.pdfLi(from, w);
+    Float lightPdf = choiceProbability(s, from, light) * light.pdfLi(from, w);
     return le * powerHeuristic(1, scatteringPdf, 1, lightPdf);
   };
   Spectrum tr(1), le(0);
@@ -142,7 +143,7 @@ Spectrum sampleOneLight(const Interaction& it, const Scatterer& scatterer,
   if (nLights == 0) return Spectrum(0);
   Float choicePdf = 1 / Float(nLights);
   const Light* chosen = s.lightSampler
-                            ? s.lightSampler->sample(it.p, uChoice, &choicePdf)
+                            ? s.lightSampler->sample(LightSampleContext(it), uChoice, &choicePdf)
                             : s.scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
   Spectrum ld(0);
   Vector3f wi;

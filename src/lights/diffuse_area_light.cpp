@@ -61,4 +61,17 @@ void DiffuseAreaLight::pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfP
     *pdfDir = cosTheta > 0 ? cosineHemispherePdf(cosTheta) : 0;
 }
 
+std::optional<LightBounds> DiffuseAreaLight::bounds() const {
+  LightBounds b;
+  b.bounds = shape_->worldBound();
+  Float y = lEmit_.y() * shape_->area();
+  b.phi = std::isfinite(y) && y > 0 ? 4 * kPi * y : 0;
+  DirectionCone normals = shape_->normalBound();
+  b.w = normals.w;
+  b.cosThetaO = normals.cosTheta;
+  b.cosThetaE = 0;  // Lambertian: out to 90° from the normal
+  b.twoSided = twoSided_;
+  return b;
+}
+
 }  // namespace candela

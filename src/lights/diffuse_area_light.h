@@ -25,6 +25,9 @@ class DiffuseAreaLight final : public AreaLight {
   void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   Spectrum power() const override { return lEmit_ * ((twoSided_ ? 2 : 1) * shape_->area() * kPi); }
   bool isDelta() const override { return false; }
+  // The shape's bounds and normal cone; its largest intensity is L times its area, along the
+  // normal.
+  std::optional<LightBounds> bounds() const override;
 
  private:
   const Shape* shape_;

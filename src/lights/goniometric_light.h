@@ -30,6 +30,10 @@ class GoniometricLight : public Light {
   // takes 4π times the plain image mean, which ignores that rows near the poles cover less).
   Spectrum power() const override;
   bool isDelta() const override { return true; }
+  // Its mean intensity (power / 4π) in every direction: the tree's estimate, not a bound.
+  std::optional<LightBounds> bounds() const override {
+    return pointSourceBounds(position_, power() / (4 * kPi));
+  }
   // The image's value along a world-space direction leaving the light.
   Spectrum scale(const Vector3f& wWorld) const;
 

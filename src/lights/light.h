@@ -8,9 +8,12 @@
 // integrators tell delta lights apart with isDelta().
 #pragma once
 
+#include <optional>
+
 #include "accel/aggregate.h"
 #include "core/interaction.h"
 #include "core/spectrum.h"
+#include "lights/light_bounds.h"
 
 namespace candela {
 
@@ -42,6 +45,9 @@ class Light {
   // Radiance along a ray that escapes the scene (infinite lights).
   virtual Spectrum Le(const RayDifferential&) const { return Spectrum(0); }
   virtual void preprocess(const Bounds3f& /*sceneBounds*/) {}
+  // Where the light is and how strongly and which way it shines, for the light tree (see
+  // LightBounds); none for lights at infinity, which it samples beside the tree.
+  virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
   int nSamples() const { return nSamples_; }
 
  private:

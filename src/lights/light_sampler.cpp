@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/sampling.h"
+#include "lights/light_tree_sampler.h"
 #include "lights/spatial_light_sampler.h"
 
 namespace candela {
@@ -11,6 +12,7 @@ std::optional<LightSampleStrategy> lightSampleStrategyNamed(const std::string& n
   if (name == "uniform") return LightSampleStrategy::Uniform;
   if (name == "power") return LightSampleStrategy::Power;
   if (name == "spatial") return LightSampleStrategy::Spatial;
+  if (name == "bvh") return LightSampleStrategy::Bvh;
   return std::nullopt;
 }
 
@@ -38,13 +40,13 @@ namespace {
 class UniformLightSampler final : public LightSampler {
  public:
   explicit UniformLightSampler(const std::vector<const Light*>& lights) : lights_(lights) {}
-  const Light* sample(const Point3f&, Float u, Float* pmf) const override {
+  const Light* sample(const LightSampleContext&, Float u, Float* pmf) const override {
     int n = int(lights_.size());
     if (n == 0) return *pmf = 0, nullptr;
     *pmf = 1 / Float(n);
     return lights_[size_t(std::min(int(u * Float(n)), n - 1))];
   }
-  Float pmf(const Point3f&, const Light&) const override {
+  Float pmf(const LightSampleContext&, const Light&) const override {
     return lights_.empty() ? 0 : 1 / Float(lights_.size());
   }
 
@@ -58,11 +60,11 @@ class PowerLightSampler final : public LightSampler {
  public:
   explicit PowerLightSampler(const std::vector<const Light*>& lights)
       : lights_(lights), index_(lights), choice_(weights(lights)) {}
-  const Light* sample(const Point3f&, Float u, Float* pmf) const override {
+  const Light* sample(const LightSampleContext&, Float u, Float* pmf) const override {
     if (lights_.empty()) return *pmf = 0, nullptr;
     return lights_[size_t(choice_.sampleDiscrete(u, pmf))];
   }
-  Float pmf(const Point3f&, const Light& light) const override {
+  Float pmf(const LightSampleContext&, const Light& light) const override {
     int i = index_.of(light);
     return i < 0 ? 0 : choice_.discretePmf(i);
   }
@@ -92,6 +94,8 @@ std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy,
       return std::make_unique<PowerLightSampler>(lights);
     case LightSampleStrategy::Spatial:
       return std::make_unique<SpatialLightSampler>(lights, sceneBounds);
+    case LightSampleStrategy::Bvh:
+      return std::make_unique<LightTreeSampler>(lights);
   }
   return nullptr;
 }

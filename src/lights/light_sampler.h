@@ -1,10 +1,12 @@
 // Which light a shading point samples for next-event estimation: the three strategies of
 // pbrt-v3's lightsamplestrategy parameter (the book picks one light uniformly, pbrt 3e §14.3;
-// pbrt-v3's later code added the other two). "uniform" picks each light with the
-// same probability; "power" in proportion to the power it emits; "spatial" in proportion to an
-// estimate of the irradiance each light sends into the region of space around the point. All
-// three are unbiased: the estimate divides by the probability of the light chosen, and the
-// integrators' MIS weights use the same probability at the same point.
+// pbrt-v3's later code added the other two) and pbrt-v4's light tree. "uniform" picks each light
+// with the same probability; "power" in proportion to the power it emits; "spatial" in proportion
+// to an estimate of the irradiance each light sends into the region of space around the point;
+// "bvh" by descending a tree over the lights by each group's importance at the point and its
+// normal (Conty Estevez & Kulla 2018, pbrt 4e §12.6). All four are unbiased: the estimate divides
+// by the probability of the light chosen, which is not 0 for any light that can send the point
+// light, and the integrators' MIS weights use the same probability at the same point.
 #pragma once
 
 #include <memory>
@@ -18,19 +20,30 @@
 
 namespace candela {
 
-enum class LightSampleStrategy { Uniform, Power, Spatial };
+enum class LightSampleStrategy { Uniform, Power, Spatial, Bvh };
 
-// "uniform", "power" or "spatial"; nullopt for anything else.
+// "uniform", "power", "spatial" or "bvh"; nullopt for anything else.
 std::optional<LightSampleStrategy> lightSampleStrategyNamed(const std::string& name);
+// Every name lightSampleStrategyNamed knows, in that order.
+inline constexpr const char* kLightSampleStrategyNames[] = {"uniform", "power", "spatial", "bvh"};
+
+// The point a light is chosen for: its position and, on a surface, its geometric normal (zero in
+// a medium or where there is none).
+struct LightSampleContext {
+  Point3f p;
+  Normal3f n;
+  LightSampleContext(const Point3f& p_, const Normal3f& n_ = Normal3f()) : p(p_), n(n_) {}
+  explicit LightSampleContext(const Interaction& it) : p(it.p), n(it.n) {}
+};
 
 class LightSampler {
  public:
   virtual ~LightSampler() = default;
-  // The light a point at p samples for u in [0, 1), and the probability of that choice; null when
-  // the scene has no light.
-  virtual const Light* sample(const Point3f& p, Float u, Float* pmf) const = 0;
-  // The probability that sample(p, u) chooses light, over u.
-  virtual Float pmf(const Point3f& p, const Light& light) const = 0;
+  // The light a point samples for u in [0, 1), and the probability of that choice; null (and
+  // *pmf 0) when the scene has no light or none can reach the point.
+  virtual const Light* sample(const LightSampleContext& at, Float u, Float* pmf) const = 0;
+  // The probability that sample(at, u) chooses light, over u.
+  virtual Float pmf(const LightSampleContext& at, const Light& light) const = 0;
 };
 
 // The position of each light in the scene's list, for the probability of a given light.

@@ -18,6 +18,9 @@ class PointLight : public Light {
   void pdfLe(const Ray& ray, const Normal3f& nLight, Float* pdfPos, Float* pdfDir) const override;
   Spectrum power() const override { return intensity_ * (4 * kPi); }
   bool isDelta() const override { return true; }
+  std::optional<LightBounds> bounds() const override {
+    return pointSourceBounds(position_, intensity_);
+  }
   const Point3f& position() const { return position_; }
 
  private:

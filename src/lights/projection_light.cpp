@@ -44,6 +44,14 @@ Spectrum ProjectionLight::sampleLi(const Interaction& ref, const Point2f&, Vecto
   return intensity_ * projection(-*wi) / dist2;
 }
 
+std::optional<LightBounds> ProjectionLight::bounds() const {
+  Float tx = screenX_ * tanHalfFov_, ty = screenY_ * tanHalfFov_;
+  Float cosHalfDiagonal = 1 / std::sqrt(1 + tx * tx + ty * ty);
+  Spectrum mean = image_ ? image_->average() : Spectrum(1);
+  return pointSourceBounds(position_, intensity_ * mean,
+                           worldConeOfLightZ(lightToWorld_, cosHalfDiagonal));
+}
+
 Spectrum ProjectionLight::power() const {
   // Half-angles of the pyramid along x and y; sin α from tan α.
   Float tx = screenX_ * tanHalfFov_, ty = screenY_ * tanHalfFov_;

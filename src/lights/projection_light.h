@@ -37,6 +37,8 @@ class ProjectionLight : public Light {
   // which overestimates). Exact for a constant image.
   Spectrum power() const override;
   bool isDelta() const override { return true; }
+  // Its mean intensity over the window, within the cone that holds the window's pyramid.
+  std::optional<LightBounds> bounds() const override;
   // The fraction of I (per channel) emitted along a world-space direction leaving the light.
   Spectrum projection(const Vector3f& wWorld) const;
 

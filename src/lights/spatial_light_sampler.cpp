@@ -93,14 +93,14 @@ const Distribution1D& SpatialLightSampler::distributionAt(const Point3f& p) cons
   return *expected;
 }
 
-const Light* SpatialLightSampler::sample(const Point3f& p, Float u, Float* pmf) const {
+const Light* SpatialLightSampler::sample(const LightSampleContext& at, Float u, Float* pmf) const {
   if (lights_.empty()) return *pmf = 0, nullptr;
-  return lights_[size_t(distributionAt(p).sampleDiscrete(u, pmf))];
+  return lights_[size_t(distributionAt(at.p).sampleDiscrete(u, pmf))];
 }
 
-Float SpatialLightSampler::pmf(const Point3f& p, const Light& light) const {
+Float SpatialLightSampler::pmf(const LightSampleContext& at, const Light& light) const {
   int i = index_.of(light);
-  return i < 0 ? 0 : distributionAt(p).discretePmf(i);
+  return i < 0 ? 0 : distributionAt(at.p).discretePmf(i);
 }
 
 }  // namespace candela

@@ -24,8 +24,8 @@ class SpatialLightSampler final : public LightSampler {
   SpatialLightSampler(const SpatialLightSampler&) = delete;
   SpatialLightSampler& operator=(const SpatialLightSampler&) = delete;
 
-  const Light* sample(const Point3f& p, Float u, Float* pmf) const override;
-  Float pmf(const Point3f& p, const Light& light) const override;
+  const Light* sample(const LightSampleContext& at, Float u, Float* pmf) const override;
+  Float pmf(const LightSampleContext& at, const Light& light) const override;
 
   // Voxels along each axis.
   int voxels(int axis) const { return n_[axis]; }

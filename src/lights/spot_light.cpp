@@ -31,6 +31,14 @@ SpotLight::SpotLight(const Transform& lightToWorld, const Spectrum& intensity, c
   position_ = toWorld(Point3f(0, 0, 0));
 }
 
+std::optional<LightBounds> SpotLight::bounds() const {
+  LightBounds b =
+      pointSourceBounds(position_, intensity_, worldConeOfLightZ(lightToWorld_, cosFalloffStart_));
+  if (!b.normals().coversEveryDirection())
+    b.cosThetaE = std::cos(safeAcos(cosTotalWidth_) - safeAcos(cosFalloffStart_));
+  return b;
+}
+
 Float SpotLight::falloff(const Vector3f& wWorld) const {
   Vector3f wl = worldToLight_(wWorld);
   Float len = wl.length();

@@ -29,6 +29,8 @@ class SpotLight : public Light {
   // uses 1/2 there, i.e. a linear falloff; the two differ by 0.3 (cosF - cosW) 2π I.)
   Spectrum power() const override;
   bool isDelta() const override { return true; }
+  // Its full intensity out to the inner cone, nothing past the outer one.
+  std::optional<LightBounds> bounds() const override;
   // The fraction of I emitted along a world-space direction leaving the light.
   Float falloff(const Vector3f& wWorld) const;
   const Point3f& position() const { return position_; }

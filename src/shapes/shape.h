@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/bounds.h"
+#include "core/direction_cone.h"
 #include "core/interaction.h"
 
 namespace candela {
@@ -36,6 +37,10 @@ class Shape {
   // The triangle mesh and triangle index when this shape is a triangle of a mesh, which the
   // Embree aggregate hands to Embree as native triangles; nullptr otherwise.
   virtual const TriangleMesh* triangleMesh(int* /*triangleIndex*/) const { return nullptr; }
+  // A cone holding the normals of every interaction on the shape, as oriented there (the side a
+  // one-sided area light emits from): what the light tree bounds a light's emission by. The
+  // default, every direction, is true of any shape.
+  virtual DirectionCone normalBound() const { return DirectionCone::everyDirection(); }
   // A short name for statistics ("sphere", "triangle").
   virtual const char* kind() const = 0;
 };

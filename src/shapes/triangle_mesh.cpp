@@ -359,6 +359,20 @@ void TriangleShape::interactionAt(const TriangleMesh& mesh, int index, const Ray
   isect.setShadingGeometry(ss, ts, dndu, dndv, true);
 }
 
+DirectionCone TriangleShape::normalBound() const {
+  const TriangleMesh::Face& face = mesh_->faces[size_t(index_)];
+  Vector3f n(face.n);
+  if (mesh_->n.empty())
+    return DirectionCone::of(mesh_->reverseOrientation != mesh_->transformSwapsHandedness ? -n : n);
+  // With interpolated normals the side is the one they point to, and dot(n, ns) is linear in the
+  // barycentrics: one sign at the three vertices is that sign everywhere.
+  const int* vi = v();
+  Float d0 = dot(n, mesh_->n[vi[0]]), d1 = dot(n, mesh_->n[vi[1]]), d2 = dot(n, mesh_->n[vi[2]]);
+  if (d0 > 0 && d1 > 0 && d2 > 0) return DirectionCone::of(n);
+  if (d0 < 0 && d1 < 0 && d2 < 0) return DirectionCone::of(-n);
+  return DirectionCone::everyDirection();
+}
+
 Float TriangleShape::area() const {
   const int* vi = v();
   const Point3f &p0 = mesh_->p[vi[0]], &p1 = mesh_->p[vi[1]], &p2 = mesh_->p[vi[2]];

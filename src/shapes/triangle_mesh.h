@@ -89,6 +89,8 @@ class TriangleShape : public Shape {
     if (triangleIndex) *triangleIndex = index_;
     return mesh_;
   }
+  // The face normal as its interactions orient it, when that side is the same at every point.
+  DirectionCone normalBound() const override;
   const char* kind() const override { return "triangle"; }
 
   const TriangleMesh* mesh() const { return mesh_; }

@@ -93,13 +93,14 @@ TEST(BdptErrors, NegativeMaxDepthIsLocated) {
 }
 
 TEST(BdptErrors, UnknownLightSamplerIsLocated) {
-  expectSceneError(std::string("Camera \"perspective\"\n") +
-                       "Integrator \"bdpt\" \"string lightsampler\" \"bvh\"\n" + kWorld,
-                   ":2:", "\"lightsampler\" must be one of uniform, power, spatial (got \"bvh\")");
   expectSceneError(
       std::string("Camera \"perspective\"\n") +
-          "Integrator \"bdpt\"\n  \"string lightsamplestrategy\" \"bvh\"\n" + kWorld,
-      ":3:", "\"lightsamplestrategy\" must be one of uniform, power, spatial (got \"bvh\")");
+          "Integrator \"bdpt\" \"string lightsampler\" \"tree\"\n" + kWorld,
+      ":2:", "\"lightsampler\" must be one of uniform, power, spatial, bvh (got \"tree\")");
+  expectSceneError(
+      std::string("Camera \"perspective\"\n") +
+          "Integrator \"bdpt\"\n  \"string lightsamplestrategy\" \"tree\"\n" + kWorld,
+      ":3:", "\"lightsamplestrategy\" must be one of uniform, power, spatial, bvh (got \"tree\")");
 }
 
 TEST(BdptErrors, CameraWithoutImportanceIsNamed) {

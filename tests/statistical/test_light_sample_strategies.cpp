@@ -1,12 +1,13 @@
-// pbrt-v3's lightsamplestrategy for the path, volpath and bdpt integrators: a strip of ground under
-// six disk lights facing it, of radiance 4 to 128, a matte sphere among them, path tracing to depth
-// 3 (so that paths also meet the lights after a bounce, where path's MIS weight takes the choice
-// probability at the previous vertex). For 8 seeds per strategy (16 samples per pixel), the image
-// means of "power" and "spatial" agree with "uniform": Welch's t of the two samples of 8 means
-// stays below 5.41, the two-sided 0.001 quantile of Student's t with 7 degrees of freedom, the
-// fewest Welch-Satterthwaite can give here (family-wise 0.006 over the six). And "spatial",
-// whose choice follows the lights nearest each point, has less than 0.6 of the per-pixel variance
-// of "uniform" (measured 0.43 for path, 0.18 for volpath; "power" 0.81 and 0.43). With path's
+// pbrt-v3's lightsamplestrategy, and pbrt-v4's light tree ("bvh"), for the path, volpath and bdpt
+// integrators: a strip of ground under six disk lights facing it, of radiance 4 to 128, a matte
+// sphere among them, path tracing to depth 3 (so that paths also meet the lights after a bounce,
+// where path's MIS weight takes the choice probability at the previous vertex). For 8 seeds per
+// strategy (16 samples per pixel), the image means of "power", "spatial" and "bvh" agree with
+// "uniform": Welch's t of the two samples of 8 means stays below 5.41, the two-sided 0.001
+// quantile of Student's t with 7 degrees of freedom, the fewest Welch-Satterthwaite can give here
+// (family-wise 0.009 over the nine). And "spatial" and "bvh", whose choices follow the lights
+// nearest each point, have less than 0.6 of the per-pixel variance of "uniform" (measured 0.43
+// for path, 0.18 for volpath; "power" 0.81 and 0.43; "bvh" 0.44 and 0.52). With path's
 // MIS weight of an emission hit taking the uniform choice probability while "spatial" chose the
 // light, t was 7.2 and the variance 1.1 of uniform's: both checks failed.
 #include <gtest/gtest.h>
@@ -94,19 +95,24 @@ class LightSampleStrategies : public testing::TestWithParam<const char*> {};
 TEST_P(LightSampleStrategies, PowerAndSpatialAreUnbiasedAndSpatialIsLessNoisyAmongManyLights) {
   const std::string integrator = GetParam();
   Renders uniform = render(integrator, "uniform"), power = render(integrator, "power"),
-          spatial = render(integrator, "spatial");
+          spatial = render(integrator, "spatial"), tree = render(integrator, "bvh");
   double tPower = welchT(power.means, uniform.means);
   double tSpatial = welchT(spatial.means, uniform.means);
+  double tTree = welchT(tree.means, uniform.means);
   std::cout << integrator << ": image means' Welch t against uniform: power " << tPower
-            << ", spatial " << tSpatial << "; per-pixel variance against uniform's "
-            << uniform.pixelVariance << ": power " << power.pixelVariance / uniform.pixelVariance
-            << "x, spatial " << spatial.pixelVariance / uniform.pixelVariance << "x\n";
+            << ", spatial " << tSpatial << ", bvh " << tTree
+            << "; per-pixel variance against uniform's " << uniform.pixelVariance << ": power "
+            << power.pixelVariance / uniform.pixelVariance << "x, spatial "
+            << spatial.pixelVariance / uniform.pixelVariance << "x, bvh "
+            << tree.pixelVariance / uniform.pixelVariance << "x\n";
   EXPECT_LT(tPower, 5.41);
   EXPECT_LT(tSpatial, 5.41);
+  EXPECT_LT(tTree, 5.41);
   // bdpt's light subpaths start from the distribution of the camera's voxel, above these
   // downward-facing lights, which send it nothing: every light gets the floor, as uniform.
   if (integrator != "bdpt") {
     EXPECT_LT(spatial.pixelVariance, 0.6 * uniform.pixelVariance);
+    EXPECT_LT(tree.pixelVariance, 0.6 * uniform.pixelVariance);
   }
 }
 

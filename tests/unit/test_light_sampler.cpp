@@ -46,7 +46,8 @@ TEST(LightSampler, StrategiesByName) {
   EXPECT_EQ(lightSampleStrategyNamed("uniform"), LightSampleStrategy::Uniform);
   EXPECT_EQ(lightSampleStrategyNamed("power"), LightSampleStrategy::Power);
   EXPECT_EQ(lightSampleStrategyNamed("spatial"), LightSampleStrategy::Spatial);
-  EXPECT_EQ(lightSampleStrategyNamed("bvh"), std::nullopt);
+  EXPECT_EQ(lightSampleStrategyNamed("bvh"), LightSampleStrategy::Bvh);
+  EXPECT_EQ(lightSampleStrategyNamed("tree"), std::nullopt);
 }
 
 TEST(LightSampler, UniformAndPowerProbabilities) {

@@ -56,8 +56,8 @@ void expectLocatedError(std::vector<ParamItem> items, const std::string& mention
 
 TEST(PathParams, BadValuesAreLocatedSceneErrors) {
   expectLocatedError(
-      {test::strings("lightsamplestrategy", {"bvh"}, kParam)},
-      "\"lightsamplestrategy\" must be one of uniform, power, spatial (got \"bvh\")");
+      {test::strings("lightsamplestrategy", {"tree"}, kParam)},
+      "\"lightsamplestrategy\" must be one of uniform, power, spatial, bvh (got \"tree\")");
   for (Float bad : {-1.f, std::numeric_limits<Float>::infinity(), std::nanf("")})
     expectLocatedError({test::floats("rrthreshold", {bad}, kParam)}, "rrthreshold");
 }
