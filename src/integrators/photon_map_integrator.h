@@ -49,6 +49,8 @@ class PhotonMapIntegrator : public SpecularRecursionIntegrator {
 
  private:
   void deriveLookups();  // estimate_ and gather_ from settings_
+  // A warning when maxdist finds far fewer photons than nused asks for, with a radius that would.
+  void warnAboutSearchRadius(const Scene& scene, const PreprocessOptions& options) const;
   void computeRadiancePhotons(std::vector<RadiancePhotonSite> sites, const PhotonMap& direct,
                               int nThreads);
 

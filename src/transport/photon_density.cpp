@@ -1,6 +1,8 @@
 #include "transport/photon_density.h"
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace candela {
 
@@ -70,6 +72,28 @@ Spectrum photonIrradiance(const PhotonMap& map, const Point3f& p, const Normal3f
   for (const NearPhoton& np : photons)
     if (dot(n, np.photon->wi) > 0) e += np.photon->alpha;
   return e * scale;
+}
+
+SearchRadiusCheck checkSearchRadius(const PhotonMap& map, const DensityEstimate& est, int queries) {
+  SearchRadiusCheck check;
+  if (map.empty() || est.nUsed <= 0 || queries <= 0) return check;
+  size_t n = std::min(map.size(), size_t(queries));
+  std::vector<NearPhoton> found(size_t(est.nUsed) + 1);
+  std::vector<Float> full;
+  double total = 0;
+  for (size_t q = 0; q < n; ++q) {
+    const Point3f& p = map.photons()[q * map.size() / n].p;
+    // One more than nUsed: the photon at p itself is found at distance 0.
+    std::span<NearPhoton> out(found);
+    total += std::max(0, map.nearest(p, est.maxDist2, out) - 1);
+    int all = map.nearest(p, kInfinity, out);
+    full.push_back(std::sqrt(out[size_t(all - 1)].dist2));
+  }
+  std::nth_element(full.begin(), full.begin() + long(n / 2), full.end());
+  check.queries = int(n);
+  check.meanFound = std::min(double(est.nUsed), total / double(n));
+  check.medianFullRadius = full[n / 2];
+  return check;
 }
 
 }  // namespace candela

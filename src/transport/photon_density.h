@@ -40,4 +40,17 @@ Spectrum photonRadiance(const PhotonMap& map, const Point3f& p, const Vector3f& 
 Spectrum photonIrradiance(const PhotonMap& map, const Point3f& p, const Normal3f& n,
                           const DensityEstimate& est, MemoryArena& arena, bool excludeAtP = false);
 
+// How well a largest search radius suits a map, measured at its own photons' positions (where
+// photons land, which is where lookups happen), up to `queries` of them spread evenly through it:
+// the mean number of photons a lookup finds within the radius (at most nUsed), and the median
+// distance of the nUsed-th nearest photon (the radius that would find them all at half the
+// positions). The same map always gives the same figures.
+struct SearchRadiusCheck {
+  int queries = 0;
+  double meanFound = 0;
+  Float medianFullRadius = 0;
+};
+SearchRadiusCheck checkSearchRadius(const PhotonMap& map, const DensityEstimate& est,
+                                    int queries = 256);
+
 }  // namespace candela
