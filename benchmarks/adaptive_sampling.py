@@ -46,9 +46,7 @@ def main():
     ap.add_argument("--threads", type=int, default=0)
     ap.add_argument("--full", action="store_true", help="full resolution (slow)")
     args = ap.parse_args()
-    candela = os.environ.get("CANDELA", os.path.join(ROOT, "build", "candela"))
-    if not os.access(candela, os.X_OK):
-        sys.exit(f"adaptive_sampling.py: no candela at {candela} (build first)")
+    candela = convergence.candela_binary("adaptive_sampling.py")
     os.makedirs(args.out, exist_ok=True)
     quick = [] if args.full else ["--quick"]
     env = dict(os.environ, CANDELA=candela)
@@ -104,10 +102,7 @@ def main():
         u = uniform[-1]
         lines.append(f"| uniform, {int(u['spp'])} spp | {u['seconds']:.3f} | {u['spp']:.0f} | "
                      f"{u['relmse']:.3g} | {u['relmse_predicted']:.3g} |")
-    text = "\n".join(lines) + "\n"
-    with open(os.path.join(args.out, "adaptive.md"), "w") as f:
-        f.write(text)
-    print(text)
+    convergence.write_report(os.path.join(args.out, "adaptive.md"), lines)
 
 
 if __name__ == "__main__":

@@ -124,6 +124,22 @@ def error_at(rows, seconds):
     return rows[-1]["relmse"] if rows else None
 
 
+def candela_binary(tool):
+    """$CANDELA or build/candela; exits naming the tool when it is not built."""
+    candela = os.environ.get("CANDELA", os.path.join(ROOT, "build", "candela"))
+    if not os.access(candela, os.X_OK):
+        sys.exit(f"{tool}: no candela at {candela} (build first)")
+    return candela
+
+
+def write_report(path, lines):
+    """Writes the Markdown lines to path and prints them."""
+    text = "\n".join(lines) + "\n"
+    with open(path, "w") as f:
+        f.write(text)
+    print(text)
+
+
 def fmt(value):
     return "-" if value is None else f"{value:.3g}"
 
@@ -148,9 +164,7 @@ def main():
     for m in methods:
         if len(m) != 2 or m[0] not in INTEGRATORS or m[1] not in SAMPLERS:
             sys.exit(f"convergence.py: bad method {'/'.join(m)}")
-    candela = os.environ.get("CANDELA", os.path.join(ROOT, "build", "candela"))
-    if not os.access(candela, os.X_OK):
-        sys.exit(f"convergence.py: no candela at {candela} (build first)")
+    candela = candela_binary("convergence.py")
     os.makedirs(args.out, exist_ok=True)
     quick = [] if args.full else ["--quick"]
     env = dict(os.environ, CANDELA=candela)

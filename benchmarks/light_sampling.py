@@ -47,9 +47,7 @@ def main():
     ap.add_argument("--ref-spp", type=int, default=4096)
     ap.add_argument("--threads", type=int, default=0)
     args = ap.parse_args()
-    candela = os.environ.get("CANDELA", os.path.join(ROOT, "build", "candela"))
-    if not os.access(candela, os.X_OK):
-        sys.exit(f"light_sampling.py: no candela at {candela} (build first)")
+    candela = convergence.candela_binary("light_sampling.py")
     os.makedirs(args.out, exist_ok=True)
     env = dict(os.environ, CANDELA=candela)
     lines = []
@@ -83,10 +81,7 @@ def main():
             lines.append(f"| {strategy} | " + " | ".join(cells) +
                          f" | {convergence.fmt(convergence.error_at(rows, equal_time))}"
                          f" | {last['relmse']:.3g} | {per_spp:.3g} |")
-    text = "\n".join(lines) + "\n"
-    with open(os.path.join(args.out, "light_sampling.md"), "w") as f:
-        f.write(text)
-    print(text)
+    convergence.write_report(os.path.join(args.out, "light_sampling.md"), lines)
 
 
 if __name__ == "__main__":

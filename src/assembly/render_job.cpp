@@ -52,17 +52,25 @@ void reportUnused(const PluginDesc& d, const WarningSink& warn) {
   });
 }
 
-// A copy of params with an integer item replaced (for --quick and --spp).
-ParamSet withInt(const ParamSet& params, const std::string& name, int value, const FileLoc& loc) {
+// A copy of params with an item of the given type replaced, its value set by setValue.
+template <typename SetValue>
+ParamSet withItem(const ParamSet& params, ParamType type, const char* typeName,
+                  const std::string& name, const FileLoc& loc, SetValue setValue) {
   ParamSet p = params;
   ParamItem item;
-  item.type = ParamType::Integer;
+  item.type = type;
   item.name = name;
-  item.typeName = "integer";
+  item.typeName = typeName;
   item.loc = loc;
-  item.ints = {value};
+  setValue(item);
   p.add(item);
   return p;
+}
+
+// A copy of params with an integer item replaced (for --quick and --spp).
+ParamSet withInt(const ParamSet& params, const std::string& name, int value, const FileLoc& loc) {
+  return withItem(params, ParamType::Integer, "integer", name, loc,
+                  [&](ParamItem& item) { item.ints = {value}; });
 }
 
 // The integrator statement with --light-sampler in place of its lightsamplestrategy, for the
@@ -83,13 +91,9 @@ PluginDesc withLightSampler(const PluginDesc& integrator, const std::string& str
     return integrator;
   }
   PluginDesc d = integrator;
-  ParamItem item;
-  item.type = ParamType::String;
-  item.name = "lightsamplestrategy";
-  item.typeName = "string";
-  item.loc = FileLoc{"--light-sampler", 0, 0};
-  item.strings = {strategy};
-  d.params.add(item);
+  d.params = withItem(integrator.params, ParamType::String, "string", "lightsamplestrategy",
+                      FileLoc{"--light-sampler", 0, 0},
+                      [&](ParamItem& item) { item.strings = {strategy}; });
   return d;
 }
 

@@ -70,16 +70,17 @@ int LightTreeSampler::build(std::vector<Item>& items, size_t begin, size_t end, 
   size_t bestImbalance = end - begin;
   Vector3f extent = centroids.diagonal();
   Float widest = std::max({extent.x, extent.y, extent.z});
+  // The bucket of a centroid along an axis of non-zero extent.
+  auto bucketOf = [&](const Item& it, int axis) {
+    int b = int(Float(kBuckets) * (it.centroid[axis] - centroids.pMin[axis]) / extent[axis]);
+    return std::clamp(b, 0, kBuckets - 1);
+  };
   for (int axis = 0; axis < 3 && depth < kCostSplitDepth; ++axis) {
     if (!(extent[axis] > 0)) continue;
-    auto bucketOf = [&](const Item& it) {
-      int b = int(Float(kBuckets) * (it.centroid[axis] - centroids.pMin[axis]) / extent[axis]);
-      return std::clamp(b, 0, kBuckets - 1);
-    };
     std::array<LightBounds, kBuckets> bucket{};
     std::array<size_t, kBuckets> count{};
     for (size_t i = begin; i < end; ++i) {
-      int b = bucketOf(items[i]);
+      int b = bucketOf(items[i], axis);
       bucket[size_t(b)] = unionOf(bucket[size_t(b)], items[i].bounds);
       ++count[size_t(b)];
     }
@@ -106,11 +107,7 @@ int LightTreeSampler::build(std::vector<Item>& items, size_t begin, size_t end, 
 
   size_t mid;
   if (bestAxis >= 0) {
-    auto below = [&](const Item& it) {
-      int b = int(Float(kBuckets) * (it.centroid[bestAxis] - centroids.pMin[bestAxis]) /
-                  extent[bestAxis]);
-      return std::clamp(b, 0, kBuckets - 1) < bestBucket;
-    };
+    auto below = [&](const Item& it) { return bucketOf(it, bestAxis) < bestBucket; };
     mid = size_t(
         std::stable_partition(items.begin() + long(begin), items.begin() + long(end), below) -
         items.begin());

@@ -83,11 +83,13 @@ SearchRadiusCheck checkSearchRadius(const PhotonMap& map, const DensityEstimate&
   double total = 0;
   for (size_t q = 0; q < n; ++q) {
     const Point3f& p = map.photons()[q * map.size() / n].p;
-    // One more than nUsed: the photon at p itself is found at distance 0.
-    std::span<NearPhoton> out(found);
-    total += std::max(0, map.nearest(p, est.maxDist2, out) - 1);
-    int all = map.nearest(p, kInfinity, out);
-    full.push_back(std::sqrt(out[size_t(all - 1)].dist2));
+    // One more than nUsed: the photon at p itself is found at distance 0. Those of the nearest
+    // within the radius are what a lookup there finds.
+    int all = map.nearest(p, kInfinity, std::span<NearPhoton>(found));
+    int within = int(std::count_if(found.begin(), found.begin() + all,
+                                   [&](const NearPhoton& np) { return np.dist2 < est.maxDist2; }));
+    total += std::max(0, within - 1);
+    full.push_back(std::sqrt(found[size_t(all - 1)].dist2));
   }
   std::nth_element(full.begin(), full.begin() + long(n / 2), full.end());
   check.queries = int(n);
