@@ -52,6 +52,8 @@ SINGLE_STEP = {"fog": 0.1, "smoke-grid": 0.02}
 # an eightieth (smaller ones left the caustic scene speckled at 64 iterations). --spp sets SPPM's
 # iterations; it takes no Sampler, so one sampler suffices.
 INTEGRATORS = {"path": '"path" "integer maxdepth" [100]',
+               # Path guiding (Müller et al. 2017): a quarter of the samples train the field.
+               "pathguided": '"path" "integer maxdepth" [100] "bool guiding" "true"',
                "volpath": '"volpath" "integer maxdepth" [100]',
                "volpath1": '"volpath" "integer maxdepth" [1]',
                # pbrt-v2's pair for Volume regions: surfaces lit directly, the volume by single

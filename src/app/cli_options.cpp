@@ -51,6 +51,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, CliOptions* o) {
                  "the scene's lightsamplestrategy: uniform, power, spatial or bvh (a light tree)")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(kLightSampleStrategyNames),
                                                      std::end(kLightSampleStrategyNames))));
+  app.add_flag("--guiding", o->guiding,
+               "Path guiding for path: directions learned from the first quarter of the samples "
+               "(the scene's \"bool guiding\")");
   app.add_option("--subdiv", o->subdiv,
                  "Code that refines loopsubdiv shapes: book (ours, default) or opensubdiv; the "
                  "surface is the same")

@@ -24,6 +24,7 @@ struct CliOptions {
   bool quick = false, quiet = false, verbose = false, stats = false;
   std::string accelerator;      // overrides the scene's Accelerator; "" = the scene's (embree)
   std::string lightSampler;     // overrides the integrator's lightsamplestrategy; "" = the scene's
+  bool guiding = false;         // turns on path's "guiding"
   std::string subdiv = "book";  // the code that refines "loopsubdiv": book or opensubdiv
   bool half = false;
   std::string dialect;                      // "" (detect), "pbrt-v2" or "pbrt-v3": material models

@@ -96,6 +96,7 @@ void renderFrame(const SceneDescription& desc, const CliOptions& cli, const Embr
   build.quick = cli.quick;
   build.accelerator = cli.accelerator;
   build.lightSampler = cli.lightSampler;
+  build.guiding = cli.guiding;
   build.compatibility = cli.compatibility();
   build.aovs = parseAovList(cli.aovs, FileLoc{"--aov", 0, 0});
   build.colorMatrix = writer.workingSpaceMatrix();

@@ -57,6 +57,7 @@ std::string imageOptionsText(const CliOptions& cli, bool half) {
   add("half", half ? "1" : "0");
   // Only when set, so that pieces rendered before the option existed still merge.
   if (!cli.lightSampler.empty()) add("light-sampler", cli.lightSampler);
+  if (cli.guiding) add("guiding", "1");
   if (cli.noiseThreshold > 0) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.17g/%d", cli.noiseThreshold, cli.adaptiveMinSamples);

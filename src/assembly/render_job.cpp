@@ -73,17 +73,21 @@ ParamSet withInt(const ParamSet& params, const std::string& name, int value, con
                   [&](ParamItem& item) { item.ints = {value}; });
 }
 
+// Whether the integrator plug-in of that name has the parameter.
+bool integratorHasParam(const std::string& integrator, const char* name) {
+  for (const IntegratorPlugin& plugin : integratorPlugins())
+    if (plugin.spec.name == integrator)
+      for (const ParamSpec& param : plugin.spec.params)
+        if (param.name == name) return true;
+  return false;
+}
+
 // The integrator statement with --light-sampler in place of its lightsamplestrategy, for the
 // integrators that read one; a warning for the others.
 PluginDesc withLightSampler(const PluginDesc& integrator, const std::string& strategy,
                             const WarningSink& warn) {
   if (strategy.empty()) return integrator;
-  bool reads = false;
-  for (const IntegratorPlugin& plugin : integratorPlugins())
-    if (plugin.spec.name == integrator.name)
-      for (const ParamSpec& param : plugin.spec.params)
-        reads |= param.name == "lightsamplestrategy";
-  if (!reads) {
+  if (!integratorHasParam(integrator.name, "lightsamplestrategy")) {
     if (warn)
       warn(integrator.loc,
            "--light-sampler is ignored: integrator '" + integrator.name +
@@ -94,6 +98,22 @@ PluginDesc withLightSampler(const PluginDesc& integrator, const std::string& str
   d.params = withItem(integrator.params, ParamType::String, "string", "lightsamplestrategy",
                       FileLoc{"--light-sampler", 0, 0},
                       [&](ParamItem& item) { item.strings = {strategy}; });
+  return d;
+}
+
+// The integrator statement with --guiding's "bool guiding" true, for the integrators that have
+// it; a warning for the others.
+PluginDesc withGuiding(const PluginDesc& integrator, bool guiding, const WarningSink& warn) {
+  if (!guiding) return integrator;
+  if (!integratorHasParam(integrator.name, "guiding")) {
+    if (warn)
+      warn(integrator.loc, "--guiding is ignored: integrator '" + integrator.name +
+                               "' has no path guiding (path has)");
+    return integrator;
+  }
+  PluginDesc d = integrator;
+  d.params = withItem(integrator.params, ParamType::Bool, "bool", "guiding",
+                      FileLoc{"--guiding", 0, 0}, [](ParamItem& item) { item.bools = {true}; });
   return d;
 }
 
@@ -390,6 +410,7 @@ RenderJob buildRenderJob(const SceneDescription& sceneDesc, const BuildOptions& 
                            ? desc.integrator
                            : orDefault(desc.surfaceIntegrator, v3 ? "path" : "directlighting"),
                        options.lightSampler, warn);
+  integratorDesc = withGuiding(integratorDesc, options.guiding, warn);
   WholeImageContext irc{job.camera.get(), job.sampler.get(),   options.seed,
                         options.quick,    options.sppOverride, job.film->pixelBounds()};
   job.integrator = createWholeImageIntegrator(integratorDesc, desc.renderer, irc);

@@ -49,6 +49,7 @@ struct BuildOptions {
   std::string accelerator;  // overrides the Accelerator statement ("" = the scene's)
   // Overrides the integrator's "lightsamplestrategy" (path, volpath, bdpt; "" = the scene's).
   std::string lightSampler;
+  bool guiding = false;  // turns on the integrator's "guiding" (path)
   // The dialect (--dialect; default: detected) and every pbrt-compatibility switch.
   CompatibilityProfile compatibility;
   unsigned aovs = 0;  // AovFlag bits, added to the Film's "aovs"

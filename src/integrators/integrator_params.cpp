@@ -211,6 +211,7 @@ std::unique_ptr<PixelSampleIntegrator> createPathIntegrator(const IntegratorInpu
   s.pbrtV3Roulette = v3 || p.find("rrthreshold") != nullptr;
   s.rrThreshold = rrThresholdParam(desc);
   s.lightStrategy = pathLightStrategy(desc);
+  s.guiding = p.getOneBool("guiding", false);
   return std::make_unique<PathIntegrator>(s);
 }
 

@@ -52,6 +52,8 @@ constexpr ParamSpec kPath[] = {
     {"rrthreshold", "float", "(pbrt-v2's roulette)", "1", "non-negative and finite", kPbrtV3,
      "throughput below which pbrt-v3's Russian roulette starts"},
     kLightStrategy,
+    {"guiding", "bool", "false", "", "", kCandela,
+     "path guiding: directions learned in the first passes (Müller et al. 2017)"},
 };
 
 constexpr ParamSpec kVolPath[] = {

@@ -135,6 +135,11 @@ RenderResult PixelSampleIntegrator::renderPixelSamples(const RenderInputs& in, F
   // An integrator that starts from the camera ray's hit gets its camera rays traced a group of a
   // pixel's samples at a time, where the aggregate traces such rays faster together (the volume
   // integrator and adaptive sampling's probe trace their own).
+  // Whether the film keeps sample index s (its AOVs too).
+  auto filmTakes = [&](int s) {
+    return (loop.filmFirstSample < 0 || s >= loop.filmFirstSample) &&
+           (loop.filmEndSample < 0 || s < loop.filmEndSample);
+  };
   const bool groupCameraRays =
       loop.firstHit && scene.aggregate().tracesCoherentRaysFaster() && !volume && !adaptive;
 
@@ -169,6 +174,10 @@ RenderResult PixelSampleIntegrator::renderPixelSamples(const RenderInputs& in, F
     // A sample's radiance, checked and added to the film.
     auto addToFilm = [&](const Point2i& pixel, int s, const CameraSample& cs,
                          PixelSampleResult& result, Float alpha) {
+      if (!filmTakes(s)) {
+        arena.reset();
+        return;
+      }
       if (!result.L.isFinite()) {
         ++c.nonFinite;
         keepFirst(c.firstNonFinite, PixelSampleIndex{pixel, s});
@@ -197,7 +206,7 @@ RenderResult PixelSampleIntegrator::renderPixelSamples(const RenderInputs& in, F
       PixelSampleResult result;
       Float alpha = 0;
       // Before Li, which may shorten the camera ray's tMax.
-      if (rayWeight > 0 && (film.aovs() & kAovGeometric))
+      if (rayWeight > 0 && (film.aovs() & kAovGeometric) && filmTakes(s))
         film.addAovSample(pixel, sampleAovs(scene, ray, arena, c.rays), cs.filterWeight);
       if (rayWeight > 0 && wantSurface) {
         // The shape-id rule compares surfaces within one pixel only: any stable id will do.
@@ -249,7 +258,7 @@ RenderResult PixelSampleIntegrator::renderPixelSamples(const RenderInputs& in, F
         if (weighted) {
           sampler->startPixelSample(pixel, g0 + i);
           skipCameraSample(*sampler);
-          if (film.aovs() & kAovGeometric)
+          if ((film.aovs() & kAovGeometric) && filmTakes(g0 + i))
             film.addAovSample(pixel, sampleAovs(scene, b.ray[i], arena, c.rays),
                               b.cs[i].filterWeight);
           SurfaceInteraction* hit = b.hit[k] ? &b.hits[k] : nullptr;

@@ -80,6 +80,9 @@ class PixelSampleIntegrator : public Integrator {
     bool rayDifferentials = false;  // camera rays carry differentials
     // Non-null: camera rays are traced in groups, and each path starts from its ray's hit.
     const FirstHitRadiance* firstHit = nullptr;
+    // The sample indices the film takes; the others are traced and not kept (path guiding's
+    // training beyond a sample range). -1: no bound.
+    int filmFirstSample = -1, filmEndSample = -1;
   };
   // The film's pixel bounds, no splats, differentials where the scene's textures read them.
   SampleLoop sampleLoop(const RenderInputs& in, const Film& film) const;

@@ -15,7 +15,8 @@ namespace {
 // caller can attenuate by the scene's volume (pbrt-v2 Volume regions).
 Spectrum sampleLightStrategy(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
                              const Point2f& uLight, Float choices, int bsdfFlags,
-                             const Scene& scene, RayStats& stats, IntegratorContext* volume) {
+                             const Scene& scene, RayStats& stats, IntegratorContext* volume,
+                             const ScatteringMixture* mixture = nullptr) {
   Vector3f wi;
   Float lightPdf = 0;
   // Its ends not zeroed: every light's sampleLi writes both when it returns a sample (a positive
@@ -28,9 +29,13 @@ Spectrum sampleLightStrategy(const SurfaceInteraction& it, const BSDF& bsdf, con
   // The estimate before the shadow ray, which only decides whether it counts: its divisions then
   // overlap the ray's setup and traversal rather than following them.
   Float pdf = lightPdf / choices;
-  Spectrum estimate =
-      light.isDelta() ? f * li / pdf
-                      : f * li * (powerHeuristic(1, pdf, 1, bsdf.pdf(it.wo, wi, bsdfFlags)) / pdf);
+  Spectrum estimate = light.isDelta()
+                          ? f * li / pdf
+                          : f * li *
+                                (powerHeuristic(1, pdf, 1,
+                                                mixture ? mixture->pdf(bsdf, it.wo, wi, bsdfFlags)
+                                                        : bsdf.pdf(it.wo, wi, bsdfFlags)) /
+                                 pdf);
   if (!scene.unoccluded(vis, stats)) return Spectrum(0);
   if (volume) estimate *= volumeTransmittance(vis, scene, *volume);
   return estimate;
@@ -121,21 +126,21 @@ Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsd
 
 Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
                                    const Scene& scene, IntegratorContext& ctx, Float uChoice,
-                                   const Point2f& uLight) {
+                                   const Point2f& uLight, const ScatteringMixture* mixture) {
   int nLights = int(scene.lights().size());
   if (nLights == 0) return Spectrum(0);
   const Light& light = *scene.lights()[std::min(int(uChoice * nLights), nLights - 1)];
   // The density of a direction under the light strategy includes the choice of the light.
   return sampleLightStrategy(it, bsdf, light, uLight, Float(nLights), kAllBxDF, scene, ctx.stats,
-                             &ctx);
+                             &ctx, mixture);
 }
 
 Spectrum sampleLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
                                 Float choicePdf, const Scene& scene, IntegratorContext& ctx,
-                                const Point2f& uLight) {
+                                const Point2f& uLight, const ScatteringMixture* mixture) {
   if (!(choicePdf > 0)) return Spectrum(0);
   return sampleLightStrategy(it, bsdf, light, uLight, 1 / choicePdf, kAllBxDF, scene, ctx.stats,
-                             &ctx);
+                             &ctx, mixture);
 }
 
 }  // namespace candela

@@ -3,9 +3,22 @@
 #pragma once
 
 #include "reflection/bsdf.h"
+#include "transport/directional_quadtree.h"
 #include "transport/integrator_context.h"
 
 namespace candela {
+
+// How a path chose its next direction when not by the BSDF alone (path guiding): with
+// probability bsdfShare by the BSDF, else by guide. The light strategy's MIS weight then takes
+// the mixture's density, the one the path's emission hits are weighed with.
+struct ScatteringMixture {
+  const DirectionalQuadtree* guide = nullptr;
+  Float bsdfShare = 1;
+  Float pdf(const BSDF& bsdf, const Vector3f& wo, const Vector3f& wi, int flags) const {
+    Float p = bsdf.pdf(wo, wi, flags);
+    return guide ? bsdfShare * p + (1 - bsdfShare) * guide->pdf(wi) : p;
+  }
+};
 
 // Radiance reflected at it toward it.wo from light `light`, one sample of each strategy. The two
 // functions below that take the context also attenuate by the scene's volume, if it has one.
@@ -29,12 +42,14 @@ Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsd
                                    const Scene& scene, IntegratorContext& ctx);
 // The same with the light's choice and sample values given (drawn by the caller, in the order
 // the other draws them: the choice, then the sample).
+// (mixture: how the path's next direction was chosen; null: by the BSDF.)
 Spectrum sampleOneLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf,
                                    const Scene& scene, IntegratorContext& ctx, Float uChoice,
-                                   const Point2f& uLight);
+                                   const Point2f& uLight,
+                                   const ScatteringMixture* mixture = nullptr);
 // The same for a light the caller chose (a LightSampler) with probability choicePdf.
 Spectrum sampleLightAgainstBSDF(const SurfaceInteraction& it, const BSDF& bsdf, const Light& light,
                                 Float choicePdf, const Scene& scene, IntegratorContext& ctx,
-                                const Point2f& uLight);
+                                const Point2f& uLight, const ScatteringMixture* mixture = nullptr);
 
 }  // namespace candela
