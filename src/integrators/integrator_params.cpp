@@ -85,11 +85,13 @@ LightSampleStrategy lightStrategyParam(const IntegratorInputs& desc, const char*
   return *lightSampleStrategyNamed(strategy);
 }
 
-// pbrt-v3's "lightsamplestrategy" of path and volpath: "spatial" in pbrt-v3 scenes that name none,
-// else uniform (pbrt-v2's choice).
+// pbrt-v3's "lightsamplestrategy" of path and volpath: in pbrt-v3 scenes that name none,
+// "spatial" unless the scene has very many lights (SpatialUnlessMany), else uniform (pbrt-v2's
+// choice).
 LightSampleStrategy pathLightStrategy(const IntegratorInputs& desc) {
-  return lightStrategyParam(desc, "lightsamplestrategy",
-                            desc.dialect == SceneDialect::PbrtV3 ? "spatial" : "uniform");
+  if (desc.dialect == SceneDialect::PbrtV3 && !desc.params.find("lightsamplestrategy"))
+    return LightSampleStrategy::SpatialUnlessMany;
+  return lightStrategyParam(desc, "lightsamplestrategy", "uniform");
 }
 
 // pbrt-v3's "rrthreshold" of path and volpath (default 1).

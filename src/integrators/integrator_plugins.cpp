@@ -32,7 +32,7 @@ constexpr ParamSpec kPathMaxDepth{
 constexpr ParamSpec kLightStrategy{"lightsamplestrategy",
                                    "string",
                                    "uniform",
-                                   "spatial",
+                                   "(spatial; bvh past 4096 lights)",
                                    "one of uniform, power, spatial, bvh",
                                    kPbrtV3,
                                    "how each light sample chooses its light"};

@@ -14,7 +14,10 @@
 
 namespace candela {
 
-void PathIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
+void PathIntegrator::preprocess(const Scene& scene, const PreprocessOptions& options) {
+  if (std::string notice = lightStrategyNotice(settings_.lightStrategy, scene.lights().size());
+      !notice.empty() && options.warn)
+    options.warn(notice);
   lightSampler_.reset();
   if (settings_.lightStrategy != LightSampleStrategy::Uniform)
     lightSampler_ = createLightSampler(settings_.lightStrategy, scene.lights(), scene.worldBound());

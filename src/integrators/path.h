@@ -10,7 +10,7 @@
 // throughput times the radiance scaling of the refractions it passed (eta^2 for each entry, pbrt
 // 3e §16.1), which pbrt-v2 itself does not undo: only the noise differs from pbrt-v2's. The light a
 // vertex samples is chosen by lightsamplestrategy (light_sampler.h); uniform by default, pbrt-v3's
-// "spatial" for pbrt-v3 scenes.
+// "spatial" for pbrt-v3 scenes (the light tree past kSpatialMostLights lights).
 //
 // With guiding (Müller, Gross & Novák 2017), the first passes of doubling sample counts, up to a
 // quarter of the samples per pixel, train a GuidingField on the incident radiance their paths

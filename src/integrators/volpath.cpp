@@ -185,7 +185,10 @@ RNG pathRng(Sampler& sampler) {
 
 }  // namespace
 
-void VolPathIntegrator::preprocess(const Scene& scene, const PreprocessOptions&) {
+void VolPathIntegrator::preprocess(const Scene& scene, const PreprocessOptions& options) {
+  if (std::string notice = lightStrategyNotice(lightStrategy_, scene.lights().size());
+      !notice.empty() && options.warn)
+    options.warn(notice);
   hittableLights_ = false;
   for (const Light* light : scene.lights()) hittableLights_ = hittableLights_ || !light->isDelta();
   lightSampler_.reset();

@@ -84,10 +84,25 @@ class PowerLightSampler final : public LightSampler {
 
 }  // namespace
 
+LightSampleStrategy resolvedLightStrategy(LightSampleStrategy strategy, size_t nLights) {
+  if (strategy != LightSampleStrategy::SpatialUnlessMany) return strategy;
+  return nLights > kSpatialMostLights ? LightSampleStrategy::Bvh : LightSampleStrategy::Spatial;
+}
+
+std::string lightStrategyNotice(LightSampleStrategy strategy, size_t nLights) {
+  if (strategy != LightSampleStrategy::SpatialUnlessMany || nLights <= kSpatialMostLights)
+    return {};
+  return "the scene has " + std::to_string(nLights) + " lights, more than " +
+         std::to_string(kSpatialMostLights) +
+         ": choosing them by a light tree (\"bvh\") rather than pbrt-v3's default \"spatial\", "
+         "which takes 128 samples of every light in each voxel (give \"string "
+         "lightsamplestrategy\" \"spatial\" to keep it)";
+}
+
 std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy,
                                                  const std::vector<const Light*>& lights,
                                                  const Bounds3f& sceneBounds) {
-  switch (strategy) {
+  switch (resolvedLightStrategy(strategy, lights.size())) {
     case LightSampleStrategy::Uniform:
       return std::make_unique<UniformLightSampler>(lights);
     case LightSampleStrategy::Power:
@@ -95,6 +110,7 @@ std::unique_ptr<LightSampler> createLightSampler(LightSampleStrategy strategy,
     case LightSampleStrategy::Spatial:
       return std::make_unique<SpatialLightSampler>(lights, sceneBounds);
     case LightSampleStrategy::Bvh:
+    case LightSampleStrategy::SpatialUnlessMany:  // resolved above
       return std::make_unique<LightTreeSampler>(lights);
   }
   return nullptr;

@@ -32,7 +32,7 @@ TEST(PathParams, DefaultsFollowTheDialect) {
   EXPECT_FALSE(v2.pbrtV3Roulette);
   EXPECT_EQ(v2.maxDepth, 5);
   PathSettings v3 = settingsOf({}, SceneDialect::PbrtV3);
-  EXPECT_EQ(v3.lightStrategy, LightSampleStrategy::Spatial);
+  EXPECT_EQ(v3.lightStrategy, LightSampleStrategy::SpatialUnlessMany);
   EXPECT_TRUE(v3.pbrtV3Roulette);
   EXPECT_EQ(v3.rrThreshold, 1);
   // Given in a pbrt-v2 scene, the parameters take effect there too.
@@ -42,6 +42,58 @@ TEST(PathParams, DefaultsFollowTheDialect) {
   EXPECT_TRUE(given.pbrtV3Roulette);
   EXPECT_EQ(given.rrThreshold, 0.25f);
   EXPECT_EQ(given.lightStrategy, LightSampleStrategy::Power);
+}
+
+// pbrt-v3's default is "spatial" up to kSpatialMostLights lights and the light tree beyond, with a
+// warning at the integrator statement that says so; a strategy given by name is kept.
+TEST(PathParams, ManyLightsTakeTheTreeByDefault) {
+  const auto v3 = LightSampleStrategy::SpatialUnlessMany;
+  EXPECT_EQ(resolvedLightStrategy(v3, kSpatialMostLights), LightSampleStrategy::Spatial);
+  EXPECT_EQ(resolvedLightStrategy(v3, kSpatialMostLights + 1), LightSampleStrategy::Bvh);
+  EXPECT_EQ(resolvedLightStrategy(LightSampleStrategy::Spatial, 100000),
+            LightSampleStrategy::Spatial);
+  EXPECT_EQ(lightStrategyNotice(v3, kSpatialMostLights), "");
+  EXPECT_EQ(lightStrategyNotice(LightSampleStrategy::Spatial, 100000), "");
+  // A pbrt-v3 scene of kSpatialMostLights + 1 emitting triangles (a strip of them) and one of as
+  // many naming "spatial".
+  auto scene = [](const std::string& integrator) {
+    const int n = int(kSpatialMostLights) + 1;
+    std::string s =
+        "Camera \"perspective\"\nFilm \"image\" \"integer xresolution\" [4] "
+        "\"integer yresolution\" [4]\n" +
+        integrator +
+        "\nWorldBegin\nAreaLightSource \"diffuse\"\nShape \"trianglemesh\" "
+        "\"integer indices\" [";
+    for (int i = 0; i < n; ++i)
+      s.append(std::to_string(i))
+          .append(" ")
+          .append(std::to_string(i + 1))
+          .append(" ")
+          .append(std::to_string(i + 2))
+          .append(" ");
+    s += "] \"point P\" [";
+    for (int i = 0; i < n + 2; ++i)
+      s.append(std::to_string(i * 0.01)).append(i % 2 ? " 1 5 " : " 0 5 ");
+    s += "]\nWorldEnd\n";
+    return s;
+  };
+  for (const char* integrator : {"path", "volpath"}) {
+    std::vector<std::string> warnings;
+    BuildOptions o;
+    o.warn = [&](const FileLoc& loc, const std::string& message) {
+      warnings.push_back(std::to_string(loc.line) + ": " + message);
+    };
+    std::string statement = std::string("Integrator \"") + integrator + "\"";
+    test::buildSceneText(scene(statement), o);
+    bool told = false;
+    for (const std::string& w : warnings)
+      told |=
+          w.rfind("3: the scene has 4097 lights", 0) == 0 && w.find("\"bvh\"") != std::string::npos;
+    EXPECT_TRUE(told) << integrator;
+    warnings.clear();
+    test::buildSceneText(scene(statement + " \"string lightsamplestrategy\" \"spatial\""), o);
+    for (const std::string& w : warnings) EXPECT_EQ(w.find("lights, more than"), std::string::npos);
+  }
 }
 
 void expectLocatedError(std::vector<ParamItem> items, const std::string& mentions) {
