@@ -102,11 +102,19 @@ void traceTile(RTCScene scene, const Camera& camera, const std::vector<const Lig
   std::vector<RTCRay> shadows;
   RTCIntersectContext context;
   for (int depth = 0; !paths.empty(); ++depth) {
-    double start = threadCpuSeconds();
-    for (RTCRayHit& rh : paths) {
+    for (RTCRayHit& rh : paths)
       rh.hit.geomID = rh.hit.primID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    double start = threadCpuSeconds();
+    if (o.streams) {
       rtcInitIntersectContext(&context);
-      rtcIntersect1(scene, &context, &rh);
+      context.flags =
+          depth == 0 ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+      rtcIntersect1M(scene, &context, paths.data(), unsigned(paths.size()), sizeof(RTCRayHit));
+    } else {
+      for (RTCRayHit& rh : paths) {
+        rtcInitIntersectContext(&context);
+        rtcIntersect1(scene, &context, &rh);
+      }
     }
     kind->cpuSeconds += threadCpuSeconds() - start;
     kind->rays += long(paths.size());
@@ -142,9 +150,15 @@ void traceTile(RTCScene scene, const Camera& camera, const std::vector<const Lig
     }
     paths.resize(next);
     start = threadCpuSeconds();
-    for (RTCRay& r : shadows) {
+    if (o.streams) {
       rtcInitIntersectContext(&context);
-      rtcOccluded1(scene, &context, &r);
+      context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+      rtcOccluded1M(scene, &context, shadows.data(), unsigned(shadows.size()), sizeof(RTCRay));
+    } else {
+      for (RTCRay& r : shadows) {
+        rtcInitIntersectContext(&context);
+        rtcOccluded1(scene, &context, &r);
+      }
     }
     totals->shadow.cpuSeconds += threadCpuSeconds() - start;
     totals->shadow.rays += long(shadows.size());

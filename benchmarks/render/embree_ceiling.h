@@ -34,6 +34,10 @@ struct CeilingOptions {
   int threads = 1;    // worker threads (tiles are scheduled one at a time)
   int tileSize = 16;  // pixels per tile side, as the renderer's default
   uint64_t seed = 1;  // the untimed random choices (lens, time, bounce, light point)
+  // Each wavefront of a tile as one stream query (rtcIntersect1M / rtcOccluded1M, camera rays
+  // marked coherent) instead of one rtcIntersect1 / rtcOccluded1 call per ray: what gathering a
+  // tile's secondary rays would buy a renderer.
+  bool streams = false;
 };
 
 // Rays of one kind and the CPU seconds Embree spent on them (summed over threads).

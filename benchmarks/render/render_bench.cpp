@@ -41,7 +41,8 @@ struct Options {
   int depth = 5;  // the ceiling's depth when the integrator is not "path"
   int ceilingRuns = 3;
   bool ceiling = true;
-  std::string csv;  // empty: no CSV file
+  bool ceilingStreams = false;  // also the ceiling with stream queries
+  std::string csv;              // empty: no CSV file
 };
 
 struct Render {
@@ -83,6 +84,21 @@ std::vector<int> defaultThreads() {
   return t;
 }
 
+// The best of a few ceiling runs, kind by kind: a ceiling is what Embree can do; other work on
+// the machine only ever slows it.
+CeilingResult bestCeiling(const EmbreeCeiling& ceiling, const RenderJob& probe,
+                          const CeilingOptions& co, int runs) {
+  CeilingResult best;
+  for (int run = 0; run < runs; ++run) {
+    CeilingResult c = ceiling.run(*probe.camera, probe.scene->lights(), co);
+    if (run == 0) best = c;
+    for (auto kind : {&CeilingResult::camera, &CeilingResult::bounce, &CeilingResult::shadow})
+      if ((c.*kind).cpuSeconds < (best.*kind).cpuSeconds) best.*kind = c.*kind;
+    best.makingSeconds = std::min(best.makingSeconds, c.makingSeconds);
+  }
+  return best;
+}
+
 void runCase(const RenderCase& c, const Options& o, const EmbreeDevice& device,
              std::ofstream& csv) {
   std::unique_ptr<RenderJob> probe = buildCase(c, 1, device);
@@ -122,14 +138,21 @@ void runCase(const RenderCase& c, const Options& o, const EmbreeDevice& device,
       co.spp = spp;
       co.maxDepth = path ? path->maxDepth() : o.depth;
       co.threads = threads;
-      // The best of a few runs, kind by kind: a ceiling is what Embree can do; other work on
-      // the machine only ever slows it.
-      for (int run = 0; run < o.ceilingRuns; ++run) {
-        CeilingResult c = ceiling->run(*probe->camera, probe->scene->lights(), co);
-        if (run == 0) ceil = c;
-        for (auto kind : {&CeilingResult::camera, &CeilingResult::bounce, &CeilingResult::shadow})
-          if ((c.*kind).cpuSeconds < (ceil.*kind).cpuSeconds) ceil.*kind = c.*kind;
-        ceil.makingSeconds = std::min(ceil.makingSeconds, c.makingSeconds);
+      ceil = bestCeiling(*ceiling, *probe, co, o.ceilingRuns);
+      if (o.ceilingStreams) {
+        co.streams = true;
+        CeilingResult streams = bestCeiling(*ceiling, *probe, co, o.ceilingRuns);
+        auto rate = [](const RayKind& k) { return k.perCpuSecond() / 1e6; };
+        auto mix = [](const CeilingResult& x) {
+          return x.cpuSeconds() > 0 ? double(x.rays()) / x.cpuSeconds() / 1e6 : 0;
+        };
+        std::printf(
+            "%-15s %3d | ceiling Mrays/thr, one query per ray: cam %.2f bnc %.2f shd %.2f mix "
+            "%.2f; stream queries per tile wavefront: cam %.2f bnc %.2f shd %.2f mix %.2f "
+            "(x%.3f)\n",
+            c.name.c_str(), threads, rate(ceil.camera), rate(ceil.bounce), rate(ceil.shadow),
+            mix(ceil), rate(streams.camera), rate(streams.bounce), rate(streams.shadow),
+            mix(streams), mix(ceil) > 0 ? mix(streams) / mix(ceil) : 0);
       }
       fraction = ceilingSecondsFor(r.rays, ceil) / r.cpuSeconds;
       scalarBound = ceil.cpuSeconds() / (ceil.cpuSeconds() + ceil.makingSeconds);
@@ -177,6 +200,9 @@ int main(int argc, char** argv) {
   app.add_option("--ceiling-runs", o.ceilingRuns, "ceiling runs per thread count (the fastest)")
       ->check(CLI::Range(1, 100));
   app.add_flag("!--no-ceiling", o.ceiling, "render only");
+  app.add_flag("--ceiling-streams", o.ceilingStreams,
+               "also run the ceiling with Embree's stream queries (rtcIntersect1M, "
+               "rtcOccluded1M) per tile wavefront, and print both");
   app.add_option("--csv", o.csv, "also write the rows to this CSV file");
   CLI11_PARSE(app, argc, argv);
   if (o.threads.empty()) o.threads = defaultThreads();

@@ -108,7 +108,7 @@ PluginDesc withGuiding(const PluginDesc& integrator, bool guiding, const Warning
   if (!integratorHasParam(integrator.name, "guiding")) {
     if (warn)
       warn(integrator.loc, "--guiding is ignored: integrator '" + integrator.name +
-                               "' has no path guiding (path has)");
+                               "' has no path guiding (path and volpath have)");
     return integrator;
   }
   PluginDesc d = integrator;

@@ -25,15 +25,32 @@ std::vector<int> adaptivePassEnds(int samplesPerPixel, const AdaptiveSampling& a
 }
 
 ProgressiveResult renderAdaptive(const RenderPass& renderPass, const Film& film,
-                                 int samplesPerPixel, const ProgressiveOptions& options) {
+                                 int samplesPerPixel, const ProgressiveOptions& options,
+                                 const std::vector<int>& leading) {
   const double limit = options.adaptive.noiseThreshold * options.adaptive.noiseThreshold;
   PixelMask mask;
   mask.bounds = film.pixelBounds();
   const Bounds2i& b = mask.bounds;
   const int width = std::max(0, b.pMax.x - b.pMin.x), height = std::max(0, b.pMax.y - b.pMin.y);
   mask.active.assign(size_t(width) * size_t(height), 1);
+  // The leading passes, then the adaptive ones from the larger of their end and the minimum.
+  AdaptiveSampling adaptive = options.adaptive;
+  const int leadEnd = leading.empty() ? 0 : leading.back();
+  adaptive.minSamples =
+      std::max(adaptive.minSamples > 0 ? adaptive.minSamples : kDefaultMinSamples, leadEnd);
+  std::vector<int> ends = leading;
+  for (int end : adaptivePassEnds(samplesPerPixel, adaptive))
+    if (end > leadEnd) ends.push_back(end);
+  const int firstCheck = std::min(std::max(1, samplesPerPixel), adaptive.minSamples);
+  int done = 0;  // the samples every active pixel has after the last pass
+  auto counted = [&](const RenderOptions& pass) {
+    RenderResult r = renderPass(pass);
+    done = pass.endSample;
+    return r;
+  };
   // A pixel stops for good once its noise is at the threshold: no later sample changes it.
   auto continuingShare = [&] {
+    if (done < firstCheck) return 1.0;
     size_t active = 0;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
@@ -45,8 +62,7 @@ ProgressiveResult renderAdaptive(const RenderPass& renderPass, const Film& film,
   };
   ProgressiveOptions po = options;
   po.render.pixels = &mask;
-  return renderPasses(renderPass, adaptivePassEnds(samplesPerPixel, options.adaptive), po,
-                      continuingShare);
+  return renderPasses(counted, ends, po, continuingShare);
 }
 
 }  // namespace candela

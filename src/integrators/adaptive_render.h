@@ -20,8 +20,10 @@ std::vector<int> adaptivePassEnds(int samplesPerPixel, const AdaptiveSampling& a
 // Renders samplesPerPixel adaptively into film through renderPass (which must honour
 // RenderOptions::pixels), by renderPasses: options.afterPass and options.timeBudget apply as
 // there, and the render stops (StopReason::NoiseThreshold) once no pixel is left above the
-// threshold.
+// threshold. leading: passes taken first by every pixel (path guiding's training passes, of
+// doubling counts); no pixel is judged before the last of them ends, nor before the minimum.
 ProgressiveResult renderAdaptive(const RenderPass& renderPass, const Film& film,
-                                 int samplesPerPixel, const ProgressiveOptions& options);
+                                 int samplesPerPixel, const ProgressiveOptions& options,
+                                 const std::vector<int>& leading = {});
 
 }  // namespace candela

@@ -223,7 +223,8 @@ std::unique_ptr<PixelSampleIntegrator> createVolPathIntegrator(const IntegratorI
   int maxDepth = maxDepthParam(desc, false);
   Float rrThreshold = rrThresholdParam(desc);
   LightSampleStrategy strategy = pathLightStrategy(desc);
-  return std::make_unique<VolPathIntegrator>(maxDepth, rrThreshold, strategy);
+  bool guiding = desc.params.getOneBool("guiding", false);
+  return std::make_unique<VolPathIntegrator>(maxDepth, rrThreshold, strategy, guiding);
 }
 
 std::unique_ptr<PixelSampleIntegrator> createDirectLightingIntegrator(

@@ -45,6 +45,15 @@ constexpr ParamSpec kDirectLighting[] = {
      "sample every light, or one chosen by chance"},
 };
 
+constexpr ParamSpec kGuiding = {
+    "guiding",
+    "bool",
+    "false",
+    "",
+    "",
+    kCandela,
+    "path guiding: directions learned in the first passes (Müller et al. 2017)"};
+
 constexpr ParamSpec kPath[] = {
     kPathMaxDepth,
     // Absent outside pbrt-v3 scenes: pbrt-v2's roulette, which every path faces (path.h); given,
@@ -52,8 +61,7 @@ constexpr ParamSpec kPath[] = {
     {"rrthreshold", "float", "(pbrt-v2's roulette)", "1", "non-negative and finite", kPbrtV3,
      "throughput below which pbrt-v3's Russian roulette starts"},
     kLightStrategy,
-    {"guiding", "bool", "false", "", "", kCandela,
-     "path guiding: directions learned in the first passes (Müller et al. 2017)"},
+    kGuiding,
 };
 
 constexpr ParamSpec kVolPath[] = {
@@ -61,6 +69,7 @@ constexpr ParamSpec kVolPath[] = {
     {"rrthreshold", "float", "1", "", "non-negative and finite", kPbrtV3,
      "throughput below which Russian roulette starts"},
     kLightStrategy,
+    kGuiding,
 };
 
 constexpr ParamSpec kAmbientOcclusion[] = {

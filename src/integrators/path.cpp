@@ -1,13 +1,12 @@
 #include "integrators/path.h"
 
 #include <algorithm>
-#include <stdexcept>
 #include <string>
 
 #include "accel/primitive.h"
 #include "core/sampling.h"
-#include "integrators/progressive_render.h"
 #include "materials/material.h"
+#include "transport/guide_recorder.h"
 #include "transport/light_sampling.h"
 #include "transport/specular_differentials.h"
 #include "transport/volume_transmittance.h"
@@ -23,79 +22,11 @@ void PathIntegrator::preprocess(const Scene& scene, const PreprocessOptions& opt
     lightSampler_ = createLightSampler(settings_.lightStrategy, scene.lights(), scene.worldBound());
 }
 
-int guidingTrainingSamples(int samplesPerPixel) {
-  int t = 0;
-  while (samplesPerPixel >= 4 * std::max(1, 2 * t)) t = std::max(1, 2 * t);
-  return t;
-}
-
-ProgressiveResult PathIntegrator::render(const RenderInputs& in, Film& film,
-                                         const ProgressiveOptions& options) {
-  if (!settings_.guiding) return PixelSampleIntegrator::render(in, film, options);
-  return renderGuided(in, film, options);
-}
-
-ProgressiveResult PathIntegrator::renderGuided(const RenderInputs& in, Film& film,
-                                               const ProgressiveOptions& options) {
-  if (options.adaptive.enabled())
-    throw std::runtime_error(
-        "path guiding does not yet combine with adaptive sampling (--noise-threshold or the "
-        "Film's \"noisethreshold\"): use one of them");
-  const int spp = in.sampler.samplesPerPixel();
-  const int trained = guidingTrainingSamples(spp);
-  // The samples the film takes: options.render's range.
-  const int first = std::max(0, options.render.firstSample);
-  const int end = options.render.endSample < 0 ? spp : std::min(options.render.endSample, spp);
-  guide_ = std::make_unique<GuidingField>(in.scene.worldBound());
-  int finished = 0;
-  auto renderPass = [&](const RenderOptions& pass) {
-    SampleLoop loop = sampleLoop(in, film);
-    loop.firstHit = this;
-    if (pass.endSample <= trained) {
-      // Training: the full image, every sample; the film keeps those of its range and crop.
-      loop.pixels = Bounds2i(Point2i(0, 0), film.fullResolution());
-      loop.filmFirstSample = first;
-      loop.filmEndSample = end;
-      recording_ = true;
-      RenderResult r;
-      try {
-        r = renderPixelSamples(in, film, pass, loop);
-      } catch (...) {
-        recording_ = false;
-        throw;
-      }
-      recording_ = false;
-      guide_->finishPass(finished++);
-      return r;
-    }
-    RenderOptions own = pass;
-    own.firstSample = std::max(pass.firstSample, first);
-    own.endSample = std::min(pass.endSample, end);
-    if (own.firstSample >= own.endSample) return RenderResult();
-    return renderPixelSamples(in, film, own, loop);
-  };
-  std::vector<int> ends = doublingPassEnds(spp);
-  if (options.afterPass || options.timeBudget > 0) return renderPasses(renderPass, ends, options);
-  // One pass after the training ones.
-  while (!ends.empty() && ends.back() > trained) ends.pop_back();
-  ends.push_back(spp);
-  ProgressiveResult result;
-  for (size_t i = 0; i < ends.size(); ++i) {
-    RenderOptions pass = options.render;
-    pass.firstSample = i == 0 ? 0 : ends[i - 1];
-    pass.endSample = ends[i];
-    if (i + 1 < ends.size()) pass.quiet = true;
-    result.total.add(renderPass(pass));
-  }
-  result.spp = spp;
-  result.passes = 1;
-  return result;
-}
-
-std::string PathIntegrator::statsReport() const {
-  if (!guide_) return {};
-  return "Path guiding: " + std::to_string(guide_->passesFinished()) + " training passes, " +
-         std::to_string(guide_->leaves()) + " spatial leaves\n";
+PixelSampleIntegrator::SampleLoop PathIntegrator::guidedSampleLoop(const RenderInputs& in,
+                                                                   const Film& film) const {
+  SampleLoop loop = sampleLoop(in, film);
+  loop.firstHit = this;
+  return loop;
 }
 
 Spectrum PathIntegrator::Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
@@ -125,36 +56,6 @@ Spectrum PathIntegrator::scatteredLi(const RayDifferential& ray, const Scene& sc
   return radiance(ray, scene, ctx, false, &alpha, hitDistance);
 }
 
-namespace {
-// Müller et al. 2017's fixed share of BSDF sampling in the guided mixture (§5.1).
-constexpr Float kGuidedBsdfShare = 0.5f;
-
-// A non-specular vertex of a training path: the radiance arriving there along the direction the
-// path took is the light the path gathers after it, over the throughput up to and with the
-// vertex's scattering (beta), not counting the vertex's own roulette (so it stays unbiased). The
-// field learns that radiance times the cosine at the vertex: for a diffuse surface the product
-// the integrand is proportional to. Learning the radiance alone (Müller et al. 2017) left the
-// indirect room at --quick at 2.4 times the relMSE at 256 spp (0.083 against 0.035).
-struct GuideRecord {
-  Point3f p;
-  Vector3f wi;
-  Float pdf;
-  Float cosine;
-  Spectrum beta;
-  Spectrum radiance;
-};
-
-// The most vertices a path records: the cost of adding light to them grows with their square.
-constexpr int kMostGuideRecords = 64;
-
-Spectrum over(const Spectrum& light, const Spectrum& beta) {
-  Spectrum r(0);
-  for (int c = 0; c < 3; ++c)
-    if (beta[c] > 0) r[c] = light[c] / beta[c];
-  return r;
-}
-}  // namespace
-
 // One ray per strategy and vertex (pbrt 4e §13.4): the direction the BSDF samples to continue the
 // path is also the BSDF strategy of next-event estimation. Emission the path meets after a
 // non-specular bounce is weighted against the light strategy's density of that direction, the
@@ -164,17 +65,11 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
                                   IntegratorContext& ctx, bool firstEmission, Float* alpha,
                                   Float* hitDistance, const FirstHit* first) const {
   Spectrum l(0), beta(1);
-  // Training: the vertices whose incident radiance the path records, and light it gathers added
-  // to each of them.
-  const int mostRecords = std::min(maxDepth_, kMostGuideRecords);
-  GuideRecord* records =
-      recording_
-          ? static_cast<GuideRecord*>(ctx.arena.alloc(sizeof(GuideRecord) * size_t(mostRecords)))
-          : nullptr;
-  int nRecords = 0;
+  // Training: the vertices whose incident radiance the path records.
+  GuidePathRecorder records(recording(), maxDepth_, ctx.arena);
   auto gather = [&](const Spectrum& light) {
     l += light;
-    for (int i = 0; i < nRecords; ++i) records[i].radiance += over(light, records[i].beta);
+    records.gather(light);
   };
   // The radiance scaling of the refractions the path passed, which the roulette leaves out.
   Float etaScale = 1;
@@ -257,10 +152,11 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     // Guiding: the field's distribution here, at a vertex with no specular lobe (a delta has no
     // density to mix), once trained. Its value is drawn at every vertex of a guided render.
     ScatteringMixture mixture;
-    const Float uMix = guide_ ? ctx.get1D() : 0;
-    if (guide_ && sampledLight &&
+    const GuidingField* guide = this->guide();
+    const Float uMix = guide ? ctx.get1D() : 0;
+    if (guide && sampledLight &&
         bsdf->numComponents() == bsdf->numComponents(kAllBxDF & ~kSpecular))
-      if (const DirectionalQuadtree& d = guide_->at(isect.p); d.trained())
+      if (const DirectionalQuadtree& d = guide->at(isect.p); d.trained())
         mixture = {&d, kGuidedBsdfShare};
     // The next direction before the light sample, which it does not depend on: its chain of
     // divisions and series then overlaps the light sample's work rather than following it.
@@ -270,13 +166,13 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
                         &sampledType);
     } else {
       // One sample of the mixture; both branches evaluate the BSDF as the light strategy does.
-      Float guidePdf = 0;
       bool sampled = true;
       if (uMix < mixture.bsdfShare) {
         bsdf->sampleF(isect.wo, &wi, uComponent, uScattering, &scatteringPdf, kAllBxDF,
                       &sampledType);
         sampled = scatteringPdf > 0;
       } else {
+        Float guidePdf;
         wi = mixture.guide->sample(uScattering, &guidePdf);
       }
       sampledType = BxDFType(kDiffuse);
@@ -298,9 +194,8 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     if (f.isBlack() || scatteringPdf == 0) break;
     beta *= f * (absDot(wi, bsdf->shadingNormal()) / scatteringPdf);
     specularBounce = (sampledType & kSpecular) != 0 || !sampledLight;
-    if (records && !specularBounce && nRecords < mostRecords)
-      records[nRecords++] = {isect.p, wi,         scatteringPdf, absDot(wi, bsdf->shadingNormal()),
-                             beta,    Spectrum(0)};
+    if (records.active() && !specularBounce)
+      records.add(isect.p, wi, scatteringPdf, absDot(wi, bsdf->shadingNormal()), beta);
     if ((sampledType & kSpecular) && (sampledType & kTransmission)) {
       // A refraction scales beta by 1 / eta^2 when the path goes in (wo on the side the normal
       // points to) and by eta^2 when it comes out (pbrt 3e §8.2.3); etaScale undoes that.
@@ -335,10 +230,7 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     }
     if (!beta.isFinite()) break;
   }
-  for (int i = 0; i < nRecords; ++i) {
-    const GuideRecord& r = records[i];
-    guide_->record(r.p, r.wi, double(r.radiance.y()) * r.cosine / r.pdf);
-  }
+  if (recording()) records.flush(*guide());
   return l;
 }
 

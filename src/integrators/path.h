@@ -12,21 +12,16 @@
 // vertex samples is chosen by lightsamplestrategy (light_sampler.h); uniform by default, pbrt-v3's
 // "spatial" for pbrt-v3 scenes (the light tree past kSpatialMostLights lights).
 //
-// With guiding (Müller, Gross & Novák 2017), the first passes of doubling sample counts, up to a
-// quarter of the samples per pixel, train a GuidingField on the incident radiance their paths
-// find; at a vertex whose BSDF has no specular lobe, half of the directions are then drawn from
-// the field's distribution there and half from the BSDF, weighed by the mixture's density (one-
-// sample MIS, §5.1). Every sample, training ones included, goes into the image: each is unbiased.
-// Training passes take the full image and every sample index below the training's end whatever
-// the crop window or sample range, so that the field, and with it every pixel, is the same bits as
-// in the full render.
+// With guiding (guided_integrator.h), at a vertex whose BSDF has no specular lobe, half of the
+// directions are drawn from the field's distribution there and half from the BSDF; the
+// mixture's density weighs the light strategy as well, since the direction that continues the
+// path is also next-event estimation's scattering sample.
 #pragma once
 
 #include <memory>
 
-#include "integrators/pixel_sample_integrator.h"
+#include "integrators/guided_integrator.h"
 #include "lights/light_sampler.h"
-#include "transport/guiding_field.h"
 
 namespace candela {
 
@@ -39,17 +34,16 @@ struct PathSettings {
   bool guiding = false;
 };
 
-// The samples per pixel that train path guiding's field: the largest power of two at most a
-// quarter of samplesPerPixel (0 below 4, where nothing is guided).
-int guidingTrainingSamples(int samplesPerPixel);
-
-class PathIntegrator : public PixelSampleIntegrator, private FirstHitRadiance {
+class PathIntegrator : public GuidedIntegrator, private FirstHitRadiance {
  public:
   VolumeRegionLight volumeRegionLight() const override { return VolumeRegionLight::EveryRay; }
   explicit PathIntegrator(int maxDepth, int rrStartDepth = 3)
       : PathIntegrator(PathSettings{maxDepth, rrStartDepth}) {}
   explicit PathIntegrator(const PathSettings& settings)
-      : maxDepth_(settings.maxDepth), rrStartDepth_(settings.rrStartDepth), settings_(settings) {}
+      : GuidedIntegrator(settings.guiding),
+        maxDepth_(settings.maxDepth),
+        rrStartDepth_(settings.rrStartDepth),
+        settings_(settings) {}
   int maxDepth() const { return maxDepth_; }
   const PathSettings& settings() const { return settings_; }
   // Makes the light sampler of a strategy other than uniform (uniform's choice is made inline:
@@ -60,10 +54,6 @@ class PathIntegrator : public PixelSampleIntegrator, private FirstHitRadiance {
   // Camera rays traced in groups, each path from its ray's hit (LiFromFirstHit).
   RenderResult renderSamples(const RenderInputs& in, Film& film,
                              const RenderOptions& options) override;
-  // With guiding: training passes, then the rest of the samples guided (see above).
-  ProgressiveResult render(const RenderInputs& in, Film& film,
-                           const ProgressiveOptions& options) override;
-  std::string statsReport() const override;
   Spectrum LiFromFirstHit(const RayDifferential& ray, SurfaceInteraction* hit, Float tHit,
                           const Scene& scene, IntegratorContext& ctx, Float* alpha) const override;
   // The radiance arriving along ray without the emission of what it meets first (a surface's Le
@@ -82,15 +72,12 @@ class PathIntegrator : public PixelSampleIntegrator, private FirstHitRadiance {
   Spectrum radiance(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,
                     bool firstEmission, Float* alpha, Float* hitDistance,
                     const FirstHit* first = nullptr) const;
-  ProgressiveResult renderGuided(const RenderInputs& in, Film& film,
-                                 const ProgressiveOptions& options);
+  // Guided passes trace camera rays in groups too.
+  SampleLoop guidedSampleLoop(const RenderInputs& in, const Film& film) const override;
   int maxDepth_;
   int rrStartDepth_;
   PathSettings settings_;
   std::unique_ptr<LightSampler> lightSampler_;  // null: uniform
-  // Path guiding's field, during a guided render; paths record into it while recording_.
-  std::unique_ptr<GuidingField> guide_;
-  bool recording_ = false;
 };
 
 }  // namespace candela

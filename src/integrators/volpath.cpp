@@ -6,6 +6,8 @@
 #include "materials/material.h"
 #include "media/medium_interface.h"
 #include "media/tracking.h"
+#include "transport/guide_recorder.h"
+#include "transport/light_sampling.h"
 #include "transport/specular_differentials.h"
 
 namespace candela {
@@ -203,6 +205,13 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
               ctx.stats, lightSampler_.get(),        hittableLights_};
   const Medium* medium = scene.volume() ? scene.volume() : scene.media().camera;
   Spectrum l(0), beta(1);
+  // Training: the surface vertices whose incident radiance the path records.
+  GuidePathRecorder records(recording(), maxDepth_, ctx.arena);
+  auto gather = [&](const Spectrum& light) {
+    l += light;
+    records.gather(light);
+  };
+  const GuidingField* guide = this->guide();
   RayDifferential ray(cameraRay);
   bool specularBounce = false;
   Float etaScale = 1;  // the radiance scaling of the refractions passed, for the roulette
@@ -217,7 +226,7 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
     FreeFlight flight;
     if (medium) {
       flight = sampleFreeFlight(*medium, ray, rng, beta);
-      l += beta * flight.emitted;
+      if (!flight.emitted.isBlack()) gather(beta * flight.emitted);
       beta *= flight.weight;
     }
     if (firstSegment) *alpha = (hit || flight.scattered) ? 1 : 0;
@@ -232,8 +241,8 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
       mi.wo = -normalize(ray.d);
       Scatterer phase{nullptr, medium->phase(mi.p, ray.time)};
       const Medium* here = medium;
-      l += beta * sampleOneLight(
-                      mi, phase, [here](const Vector3f&) { return here; }, s, ctx.sampler);
+      gather(beta * sampleOneLight(
+                        mi, phase, [here](const Vector3f&) { return here; }, s, ctx.sampler));
       Vector3f wi;
       Float pdf;
       Float ratio = phase.phase.sample(mi.wo, ctx.sampler.get2D(), &wi, &pdf);
@@ -247,9 +256,10 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
       // Emission is counted here only where next-event estimation could not have sampled it.
       if (bounces == 0 || specularBounce) {
         if (hit) {
-          if (isect.primitive->areaLight) l += beta * isect.primitive->areaLight->L(isect, -ray.d);
+          if (isect.primitive->areaLight)
+            gather(beta * isect.primitive->areaLight->L(isect, -ray.d));
         } else {
-          for (const Light* light : scene.lights()) l += beta * light->Le(ray);
+          for (const Light* light : scene.lights()) gather(beta * light->Le(ray));
         }
       }
       if (!hit) break;
@@ -268,19 +278,45 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
       if (bsdf->numComponents(kNonSpecular) > 0) {
         const Medium* current = medium;
         const MediaRules& rules = s.media;
-        l += beta * sampleOneLight(
-                        isect, surface,
-                        [&](const Vector3f& w) { return rules.after(isect, w, current); }, s,
-                        ctx.sampler);
+        gather(beta * sampleOneLight(
+                          isect, surface,
+                          [&](const Vector3f& w) { return rules.after(isect, w, current); }, s,
+                          ctx.sampler));
       }
       Vector3f wi;
       Float pdf;
       BxDFType sampledType;
-      Spectrum f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf,
-                                 kAllBxDF, &sampledType);
+      Spectrum f;
+      const DirectionalQuadtree* trained = nullptr;
+      if (guide && bsdf->numComponents(kNonSpecular) > 0 &&
+          bsdf->numComponents() == bsdf->numComponents(kNonSpecular))
+        if (const DirectionalQuadtree& d = guide->at(isect.p); d.trained()) trained = &d;
+      if (!trained) {
+        f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf, kAllBxDF,
+                          &sampledType);
+      } else {
+        // One sample of the mixture of the BSDF and the field (values drawn in a fixed order).
+        Float uComponent = ctx.sampler.get1D();
+        Point2f u = ctx.sampler.get2D();
+        Float uMix = ctx.sampler.get1D();
+        const ScatteringMixture mixture{trained, kGuidedBsdfShare};
+        bool sampled = true;
+        if (uMix < mixture.bsdfShare) {
+          bsdf->sampleF(isect.wo, &wi, uComponent, u, &pdf, kAllBxDF, &sampledType);
+          sampled = pdf > 0;
+        } else {
+          Float guidePdf;
+          wi = trained->sample(u, &guidePdf);
+        }
+        sampledType = BxDFType(kDiffuse);
+        f = sampled ? bsdf->f(isect.wo, wi) : Spectrum(0);
+        pdf = sampled ? mixture.pdf(*bsdf, isect.wo, wi, kAllBxDF) : 0;
+      }
       if (f.isBlack() || pdf == 0) break;
       beta *= f * (absDot(wi, bsdf->shadingNormal()) / pdf);
       specularBounce = (sampledType & kSpecular) != 0;
+      if (records.active() && !specularBounce)
+        records.add(isect.p, wi, pdf, absDot(wi, bsdf->shadingNormal()), beta);
       if ((sampledType & kSpecular) && (sampledType & kTransmission)) {
         // A refraction scales beta by 1 / eta^2 going in and eta^2 coming out (pbrt 3e §8.2.3);
         // the roulette below looks at beta without that scaling, as pbrt-v3's volpath does.
@@ -303,6 +339,7 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
     }
     if (!beta.isFinite()) break;
   }
+  if (records.active()) records.flush(*this->guide());
   return l;
 }
 

@@ -15,22 +15,32 @@
 //
 // The light a vertex samples is chosen by lightsamplestrategy (light_sampler.h; pbrt-v3's default,
 // "spatial", for scenes that name no strategy), its estimate divided by the choice's probability.
+//
+// With guiding (guided_integrator.h), a surface vertex whose BSDF has no specular lobe continues
+// the path half of the time in a direction drawn from the field's distribution there, weighed by
+// the mixture's density; next-event estimation keeps its own BSDF sample, and medium vertices
+// their phase function's. The field learns at surface vertices the light arriving along the
+// path, medium scattering on the way included.
 #pragma once
 
 #include <memory>
 
-#include "integrators/pixel_sample_integrator.h"
+#include "integrators/guided_integrator.h"
 #include "lights/light_sampler.h"
 
 namespace candela {
 
-class VolPathIntegrator : public PixelSampleIntegrator {
+class VolPathIntegrator : public GuidedIntegrator {
  public:
   // maxDepth: scattering events (surface or medium) at most; rrThreshold: Russian roulette
   // starts once the throughput's largest channel falls below it (pbrt-v3's defaults 5 and 1).
   VolPathIntegrator(int maxDepth, Float rrThreshold,
-                    LightSampleStrategy lightStrategy = LightSampleStrategy::Uniform)
-      : maxDepth_(maxDepth), rrThreshold_(rrThreshold), lightStrategy_(lightStrategy) {}
+                    LightSampleStrategy lightStrategy = LightSampleStrategy::Uniform,
+                    bool guiding = false)
+      : GuidedIntegrator(guiding),
+        maxDepth_(maxDepth),
+        rrThreshold_(rrThreshold),
+        lightStrategy_(lightStrategy) {}
   // Makes the light sampler of a strategy other than uniform (chosen inline).
   void preprocess(const Scene& scene, const PreprocessOptions& options) override;
   Spectrum Li(const RayDifferential& ray, const Scene& scene, IntegratorContext& ctx,

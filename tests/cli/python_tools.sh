@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The Python tools run with what the extras install list brings (python3, python3-matplotlib):
-# the convergence benchmark at a tiny sample count on two scenes (references through tools/reference.sh, the
-# table and the plots), the accelerator scaling plot from a small CSV, and the footprint benchmark.
+# the convergence benchmark at a tiny sample count on two scenes (references through
+# tools/reference.sh, the table and the plots), the scene suite the same way, the accelerator
+# scaling plot from a small CSV, and the footprint benchmark.
 set -euo pipefail
 candela=$1 src=$2 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
@@ -16,6 +17,24 @@ done
 is_png conv/cornell-box.png || { echo "FAIL: cornell-box.png is not a PNG"; exit 1; }
 [ "$(tail -n +2 conv/convergence.csv | wc -l)" = 8 ] ||
   { cat conv/convergence.csv; echo "FAIL: expected 8 rows (2 scenes x 4 methods)"; exit 1; }
+
+# The scene suite at a tiny count: every configuration on two scenes (the caustic's reference by
+# bdpt), the table, the plots; an unknown scene or configuration is refused by name.
+CANDELA=$candela CANDELA_CACHE=$work/cache /usr/bin/python3 "$src/benchmarks/suite.py" \
+  --out "$work/suite" --spp 4 --jobs 2 --blender none --scenes cornell-box,caustic \
+  --configs uniform,adaptive,bvh,guided,bvh+adaptive,guided+adaptive,guided+bvh >suite.txt
+for f in suite/suite.csv suite/suite.md suite/cornell-box.png suite/caustic.png; do
+  test -s "$f" || { cat suite.txt; echo "FAIL: suite.py wrote no $f"; exit 1; }
+done
+[ "$(tail -n +2 suite/suite.csv | wc -l)" = 14 ] ||
+  { cat suite/suite.csv; echo "FAIL: expected 14 rows (2 scenes x 7 configurations)"; exit 1; }
+# Every row measured: a positive CPU time and relMSE, the count asked for.
+awk -F, 'NR > 1 && !($NF > 0 && $(NF-1) > 0 && $(NF-3) == 4) { bad = 1; print } END { exit bad }' \
+  suite/suite.csv || { echo "FAIL: a suite row without its measures"; exit 1; }
+if /usr/bin/python3 "$src/benchmarks/suite.py" --scenes nowhere --out "$work/x" 2>err.txt; then
+  echo "FAIL: suite.py accepted an unknown scene"; exit 1
+fi
+grep -q "unknown scene nowhere" err.txt || { cat err.txt; echo "FAIL: no word on the scene"; exit 1; }
 
 cat >scaling.csv <<'CSV'
 aggregate,triangles,build_cpu_s,camera_ns_per_ray,bounce_ns_per_ray

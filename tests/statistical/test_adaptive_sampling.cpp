@@ -121,6 +121,30 @@ TEST(AdaptiveSampling, AHighThresholdStopsEveryPixelAtTheMinimum) {
   EXPECT_EQ(r.result.total.samples, uint64_t(8 * 16 * 16));
 }
 
+// With path guiding, every pixel takes the training passes (1, 2, ..., 64 of 256 samples) and
+// is judged from their end on, though the minimum is 8: a threshold every pixel meets then
+// stops them all at 64, and a lower one leaves each on a pass boundary at or past 64.
+TEST(AdaptiveSampling, WithGuidingPixelsAreJudgedFromTheEndOfTraining) {
+  std::string text = randomBox(16);
+  const std::string path = "SurfaceIntegrator \"path\" \"integer maxdepth\" [5]";
+  ASSERT_NE(text.find(path), std::string::npos);
+  text.replace(text.find(path), path.size(), path + " \"bool guiding\" \"true\"");
+  AdaptiveRender high = renderAdaptively(text, 256, 5, 1e6, 8);
+  EXPECT_EQ(high.result.reason, StopReason::NoiseThreshold);
+  EXPECT_EQ(high.result.total.samples, uint64_t(64 * 16 * 16));
+  AdaptiveRender low = renderAdaptively(text, 256, 5, 0.1, 8);
+  std::vector<int> ends = adaptivePassEnds(256, AdaptiveSampling{0.1, 64});
+  const Bounds2i b = low.film().pixelBounds();
+  int stoppedEarly = 0;
+  for (int y = b.pMin.y; y < b.pMax.y; ++y)
+    for (int x = b.pMin.x; x < b.pMax.x; ++x) {
+      const long n = low.film().pixelSampleCount(Point2i(x, y));
+      ASSERT_NE(std::find(ends.begin(), ends.end(), int(n)), ends.end()) << n;
+      stoppedEarly += n < 256;
+    }
+  EXPECT_GT(stoppedEarly, 0);
+}
+
 TEST(AdaptiveSampling, IntegratorsWhosePixelsDoNotHoldTheirLightAreRefused) {
   for (const char* integrator : {"SurfaceIntegrator \"bdpt\" \"integer maxdepth\" [3]",
                                  "SurfaceIntegrator \"sppm\" \"float radius\" [8]"}) {
