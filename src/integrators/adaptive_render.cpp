@@ -48,15 +48,24 @@ ProgressiveResult renderAdaptive(const RenderPass& renderPass, const Film& film,
     done = pass.endSample;
     return r;
   };
-  // A pixel stops for good once its noise is at the threshold: no later sample changes it.
+  // A pixel stops for good once its noise is at the threshold at two checks in a row: no later
+  // sample changes it. One check is not enough: a pixel whose light comes by rare paths can see
+  // none of them in its first samples, and its estimate is then zero (in the indirect room at
+  // --quick, 64 of 4,096 pixels stopped black at 16 samples and held a fifth of the image's
+  // error at threshold 0.0125).
+  std::vector<uint8_t> metOnce(mask.active.size(), 0);
   auto continuingShare = [&] {
     if (done < firstCheck) return 1.0;
     size_t active = 0;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
-        uint8_t& on = mask.active[size_t(y) * size_t(width) + size_t(x)];
-        if (on) on = estimatePixelRelMse(film, Point2i(b.pMin.x + x, b.pMin.y + y)) > limit;
-        active += on;
+        const size_t i = size_t(y) * size_t(width) + size_t(x);
+        if (mask.active[i]) {
+          const bool met = estimatePixelRelMse(film, Point2i(b.pMin.x + x, b.pMin.y + y)) <= limit;
+          if (met && metOnce[i]) mask.active[i] = 0;
+          metOnce[i] = met;
+        }
+        active += mask.active[i];
       }
     return mask.active.empty() ? 0.0 : double(active) / double(mask.active.size());
   };

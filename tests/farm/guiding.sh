@@ -32,14 +32,14 @@ wait_all
 if "$diff" single.exr unguided.exr --max-ulps 0 > /dev/null 2>&1; then
   echo "FAIL: --guiding did not change the image"; exit 1
 fi
-# Adaptive: 32 spp, pixels judged from 16 on (the minimum; training ends at 8).
-aopts=(--spp 32 --seed 5 --guiding --noise-threshold 0.2 --preview none -q)
+# Adaptive: 64 spp, minimum 8, pixels judged from 16 on (where training ends).
+aopts=(--spp 64 --seed 5 --guiding --noise-threshold 0.2 --adaptive-min-samples 8 --preview none -q)
 in_parallel "$candela" room.pbrt "${aopts[@]}" --nthreads 1 -o adaptive.exr
 in_parallel "$candela" room.pbrt "${aopts[@]}" --nthreads 2 --tile-size 7 -o adaptive-threads.exr
 for i in 0 1; do
   in_parallel "$candela" room.pbrt "${aopts[@]}" --tile "$i/2" -o "atile$i.exr"
 done
-in_parallel "$candela" room.pbrt --spp 32 --seed 5 --guiding --preview none -q -o guided32.exr
+in_parallel "$candela" room.pbrt --spp 64 --seed 5 --guiding --preview none -q -o guided64.exr
 # volpath through the smoke, small.
 sed -e 's/"integer xresolution" \[240\] "integer yresolution" \[240\]/"integer xresolution" [31] "integer yresolution" [23]/' \
   "$src/scenes/smoke/smoke.pbrt" > smoke.pbrt
@@ -56,7 +56,7 @@ wait_all
   { echo "FAIL: adaptive guided: threads or tile size change it"; exit 1; }
 "$candela" merge -q -o atiles.exr atile0.exr atile1.exr
 "$diff" adaptive.exr atiles.exr --max-ulps 0 || { echo "FAIL: adaptive guided farm tiles differ"; exit 1; }
-if "$diff" adaptive.exr guided32.exr --max-ulps 0 > /dev/null 2>&1; then
+if "$diff" adaptive.exr guided64.exr --max-ulps 0 > /dev/null 2>&1; then
   echo "FAIL: --noise-threshold did not change the guided image"; exit 1
 fi
 "$diff" vsingle.exr vthreads.exr --max-ulps 0 ||
