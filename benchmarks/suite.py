@@ -29,7 +29,9 @@ Written to DIR (default out/suite): suite.csv and suite.md (per scene and config
 relMSE 1e-2 and 1e-3, interpolated log-log between points, or, marked '*', extrapolated past the
 last one as relMSE ~ 1 / time; relMSE at the scene's equal time, the shortest of its runs' total
 times, '-' when the run's first point came later; the samples per pixel asked for and taken on
-average, the relMSE and the CPU s of the last point) and one plot per scene, DIR/<scene>.png
+average, the relMSE of the last point, the image mean's offset from the reference's (of the
+finished images: the last one, or for adaptive configurations the threshold's image furthest
+off) and the last point's CPU s) and one plot per scene, DIR/<scene>.png
 (tools/plot_convergence.py). An adaptive configuration's first point is its minimum count (16
 spp): a target uniform sampling meets with fewer samples it meets no sooner than that.
 """
@@ -200,14 +202,25 @@ def candela_curves(name, scene, args, ref, configs, pool):
                         ADAPTIVE_BASE[c] + ["--noise-threshold", str(t)],
                         os.path.join(args.out, f"{name}-{c}-{t}.log.csv"), out)
         curves = {}
+        images = {}
         for (c, t), job in jobs.items():
             rows = job.result()
+            image = os.path.join(args.out, f"{name}-{c}{'' if t is None else '-' + str(t)}.exr")
+            images[image] = rows[-1]
             if t is None:
                 curves[c] = rows
             else:
                 # The threshold's finished image is the point; its passes are not images a
                 # user asking for another threshold would have had.
                 curves.setdefault(c, []).append(dict(rows[-1], threshold=t))
+                images[image] = curves[c][-1]
+        # Each finished image's mean against the reference's (adaptive sampling stops on the
+        # samples themselves, so it can be biased: relMSE alone would not show it).
+        metrics = equal_error.compare(args.candela, list(images), [ref, ref])
+        for image, row in images.items():
+            m = metrics[image]
+            row["offset"] = sum(float(m["mean_" + ch]) / float(m["ref_mean_" + ch]) - 1
+                                for ch in "rgb") / 3
         for c in curves:
             curves[c].sort(key=lambda r: r["seconds"])
         return curves
@@ -242,6 +255,9 @@ def peer_curves(name, scene, args, ref):
         metrics = equal_error.compare(args.candela, images, refs)
         for row, image in zip(rows, images):
             row["mean_spp"] = row["spp"]
+            m = metrics[image]
+            row["offset"] = sum(float(m["mean_" + ch]) / float(m["ref_mean_" + ch]) - 1
+                                for ch in "rgb") / 3
             # With one reference given twice, relmse_raw is the plain relMSE against it.
             row["relmse"] = float(metrics[image]["relmse" if own else "relmse_raw"])
         curves[r.name + (" (own reference)" if own else "")] = rows
@@ -330,6 +346,8 @@ def main():
                               "spp": int(last["spp"]),
                               "mean_spp": f"{last['mean_spp']:.3g}",
                               "relmse": f"{last['relmse']:.3g}",
+                              "mean_offset": "%+.2f%%" % (100 * max(
+                                  (r["offset"] for r in rows if "offset" in r), key=abs)),
                               "cpu_s": f"{last['seconds']:.3g}"})
             plot = subprocess.run([os.path.join(ROOT, "tools", "plot_convergence.py"),
                                    os.path.join(args.out, f"{name}.png"), "--title", name] + plots,

@@ -29,7 +29,7 @@ done
 [ "$(tail -n +2 suite/suite.csv | wc -l)" = 14 ] ||
   { cat suite/suite.csv; echo "FAIL: expected 14 rows (2 scenes x 7 configurations)"; exit 1; }
 # Every row measured: a positive CPU time and relMSE, the count asked for.
-awk -F, 'NR > 1 && !($NF > 0 && $(NF-1) > 0 && $(NF-3) == 4) { bad = 1; print } END { exit bad }' \
+awk -F, 'NR > 1 && !($NF > 0 && $(NF-2) > 0 && $(NF-4) == 4) { bad = 1; print } END { exit bad }' \
   suite/suite.csv || { echo "FAIL: a suite row without its measures"; exit 1; }
 if /usr/bin/python3 "$src/benchmarks/suite.py" --scenes nowhere --out "$work/x" 2>err.txt; then
   echo "FAIL: suite.py accepted an unknown scene"; exit 1
