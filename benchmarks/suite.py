@@ -350,7 +350,8 @@ def main():
                                   (r["offset"] for r in rows if "offset" in r), key=abs)),
                               "cpu_s": f"{last['seconds']:.3g}"})
             plot = subprocess.run([os.path.join(ROOT, "tools", "plot_convergence.py"),
-                                   os.path.join(args.out, f"{name}.png"), "--title", name] + plots,
+                                   os.path.join(args.out, f"{name}.png"), "--title", name,
+                                   "--xlabel", "CPU s (one thread)"] + plots,
                                   capture_output=True, text=True)
             if plot.returncode != 0:
                 print(f"suite.py: no plot for {name}: {plot.stderr.strip()}", file=sys.stderr)

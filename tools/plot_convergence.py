@@ -36,6 +36,7 @@ def main():
     ap.add_argument("--metric", default="relmse", help="column to plot (default relmse)")
     ap.add_argument("--x", default="seconds", help="seconds (default), spp or rays")
     ap.add_argument("--title", default="")
+    ap.add_argument("--xlabel", default=None, help="the x axis' label (default: the column's)")
     args = ap.parse_args()
 
     fig, ax = plt.subplots(figsize=(7, 5))
@@ -57,7 +58,8 @@ def main():
         x0, y0 = xs[mid], ys[mid]
         lo, hi = min(xs), max(xs)
         ax.loglog([lo, hi], [y0 * x0 / lo, y0 * x0 / hi], "k--", linewidth=1, label="slope -1")
-    ax.set_xlabel({"seconds": "wall time (s)", "spp": "samples per pixel"}.get(args.x, args.x))
+    ax.set_xlabel(args.xlabel or
+                  {"seconds": "wall time (s)", "spp": "samples per pixel"}.get(args.x, args.x))
     ax.set_ylabel(args.metric)
     if args.title:
         ax.set_title(args.title)
