@@ -166,6 +166,12 @@ def reference(name, scene, args):
     return out.stdout.strip().splitlines()[-1]
 
 
+def mean_offset(metrics):
+    """The image mean's offset from the reference's, over R, G and B, from `candela compare`."""
+    return sum(float(metrics["mean_" + c]) / float(metrics["ref_mean_" + c]) - 1
+               for c in "rgb") / 3
+
+
 def run_candela(args, scene, path, ref, options, log, out):
     """One render with --error-log; its rows with seconds moved to process CPU time."""
     cmd = [args.candela, path, "--spp", str(scene.spp), "--seed", "1", "--nthreads", "1",
@@ -218,9 +224,7 @@ def candela_curves(name, scene, args, ref, configs, pool):
         # samples themselves, so it can be biased: relMSE alone would not show it).
         metrics = equal_error.compare(args.candela, list(images), [ref, ref])
         for image, row in images.items():
-            m = metrics[image]
-            row["offset"] = sum(float(m["mean_" + ch]) / float(m["ref_mean_" + ch]) - 1
-                                for ch in "rgb") / 3
+            row["offset"] = mean_offset(metrics[image])
         for c in curves:
             curves[c].sort(key=lambda r: r["seconds"])
         return curves
@@ -255,9 +259,7 @@ def peer_curves(name, scene, args, ref):
         metrics = equal_error.compare(args.candela, images, refs)
         for row, image in zip(rows, images):
             row["mean_spp"] = row["spp"]
-            m = metrics[image]
-            row["offset"] = sum(float(m["mean_" + ch]) / float(m["ref_mean_" + ch]) - 1
-                                for ch in "rgb") / 3
+            row["offset"] = mean_offset(metrics[image])
             # With one reference given twice, relmse_raw is the plain relMSE against it.
             row["relmse"] = float(metrics[image]["relmse" if own else "relmse_raw"])
         curves[r.name + (" (own reference)" if own else "")] = rows

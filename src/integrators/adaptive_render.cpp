@@ -42,12 +42,7 @@ ProgressiveResult renderAdaptive(const RenderPass& renderPass, const Film& film,
   for (int end : adaptivePassEnds(samplesPerPixel, adaptive))
     if (end > leadEnd) ends.push_back(end);
   const int firstCheck = std::min(std::max(1, samplesPerPixel), adaptive.minSamples);
-  int done = 0;  // the samples every active pixel has after the last pass
-  auto counted = [&](const RenderOptions& pass) {
-    RenderResult r = renderPass(pass);
-    done = pass.endSample;
-    return r;
-  };
+  size_t passesDone = 0;  // continuingShare runs after each pass of ends, in order
   // A pixel stops for good once its noise is at the threshold at two checks in a row: no later
   // sample changes it. One check is not enough: a pixel whose light comes by rare paths can see
   // none of them in its first samples, and its estimate is then zero (in the indirect room at
@@ -55,7 +50,7 @@ ProgressiveResult renderAdaptive(const RenderPass& renderPass, const Film& film,
   // error at threshold 0.0125).
   std::vector<uint8_t> metOnce(mask.active.size(), 0);
   auto continuingShare = [&] {
-    if (done < firstCheck) return 1.0;
+    if (ends[passesDone++] < firstCheck) return 1.0;
     size_t active = 0;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
@@ -71,7 +66,7 @@ ProgressiveResult renderAdaptive(const RenderPass& renderPass, const Film& film,
   };
   ProgressiveOptions po = options;
   po.render.pixels = &mask;
-  return renderPasses(counted, ends, po, continuingShare);
+  return renderPasses(renderPass, ends, po, continuingShare);
 }
 
 }  // namespace candela

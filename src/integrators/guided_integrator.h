@@ -21,9 +21,6 @@ namespace candela {
 // quarter of samplesPerPixel (0 below 4, where nothing is guided).
 int guidingTrainingSamples(int samplesPerPixel);
 
-// Müller et al. 2017's fixed share of BSDF sampling in the guided mixture (§5.1).
-inline constexpr Float kGuidedBsdfShare = 0.5f;
-
 class GuidedIntegrator : public PixelSampleIntegrator {
  public:
   // Without guiding, PixelSampleIntegrator's; with it, training passes, then the rest.
@@ -31,7 +28,6 @@ class GuidedIntegrator : public PixelSampleIntegrator {
                            const ProgressiveOptions& options) override;
   // The field's passes and leaves, after a guided render.
   std::string statsReport() const override;
-  bool guiding() const { return guiding_; }
 
  protected:
   explicit GuidedIntegrator(bool guiding) : guiding_(guiding) {}

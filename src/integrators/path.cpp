@@ -149,36 +149,17 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     else
       ctx.skip1D();
     const Point2f uScattering = ctx.get2D();
-    // Guiding: the field's distribution here, at a vertex with no specular lobe (a delta has no
-    // density to mix), once trained. Its value is drawn at every vertex of a guided render.
-    ScatteringMixture mixture;
-    const GuidingField* guide = this->guide();
-    const Float uMix = guide ? ctx.get1D() : 0;
-    if (guide && sampledLight &&
-        bsdf->numComponents() == bsdf->numComponents(kAllBxDF & ~kSpecular))
-      if (const DirectionalQuadtree& d = guide->at(isect.p); d.trained())
-        mixture = {&d, kGuidedBsdfShare};
+    // Guiding: the field's distribution here (guidedMixture). Its value is drawn at every vertex
+    // of a guided render.
+    const Float uMix = guide() ? ctx.get1D() : 0;
+    const ScatteringMixture mixture =
+        guide() ? guidedMixture(guide(), *bsdf, isect.p) : ScatteringMixture();
     // The next direction before the light sample, which it does not depend on: its chain of
     // divisions and series then overlaps the light sample's work rather than following it.
-    Spectrum f;
-    if (!mixture.guide) {
-      f = bsdf->sampleF(isect.wo, &wi, uComponent, uScattering, &scatteringPdf, kAllBxDF,
-                        &sampledType);
-    } else {
-      // One sample of the mixture; both branches evaluate the BSDF as the light strategy does.
-      bool sampled = true;
-      if (uMix < mixture.bsdfShare) {
-        bsdf->sampleF(isect.wo, &wi, uComponent, uScattering, &scatteringPdf, kAllBxDF,
-                      &sampledType);
-        sampled = scatteringPdf > 0;
-      } else {
-        Float guidePdf;
-        wi = mixture.guide->sample(uScattering, &guidePdf);
-      }
-      sampledType = BxDFType(kDiffuse);
-      f = sampled ? bsdf->f(isect.wo, wi) : Spectrum(0);
-      scatteringPdf = sampled ? mixture.pdf(*bsdf, isect.wo, wi, kAllBxDF) : 0;
-    }
+    const Spectrum f = mixture.guide ? mixture.sample(*bsdf, isect.wo, uComponent, uScattering,
+                                                      uMix, &wi, &scatteringPdf, &sampledType)
+                                     : bsdf->sampleF(isect.wo, &wi, uComponent, uScattering,
+                                                     &scatteringPdf, kAllBxDF, &sampledType);
     const ScatteringMixture* mix = mixture.guide ? &mixture : nullptr;
     if (sampledLight) {
       if (!lightSampler_) {
@@ -230,7 +211,7 @@ Spectrum PathIntegrator::radiance(const RayDifferential& cameraRay, const Scene&
     }
     if (!beta.isFinite()) break;
   }
-  if (recording()) records.flush(*guide());
+  if (records.active()) records.flush(*guide());
   return l;
 }
 

@@ -287,11 +287,7 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
       Float pdf;
       BxDFType sampledType;
       Spectrum f;
-      const DirectionalQuadtree* trained = nullptr;
-      if (guide && bsdf->numComponents(kNonSpecular) > 0 &&
-          bsdf->numComponents() == bsdf->numComponents(kNonSpecular))
-        if (const DirectionalQuadtree& d = guide->at(isect.p); d.trained()) trained = &d;
-      if (!trained) {
+      if (const ScatteringMixture mixture = guidedMixture(guide, *bsdf, isect.p); !mixture.guide) {
         f = bsdf->sampleF(isect.wo, &wi, ctx.sampler.get1D(), ctx.sampler.get2D(), &pdf, kAllBxDF,
                           &sampledType);
       } else {
@@ -299,18 +295,7 @@ Spectrum VolPathIntegrator::Li(const RayDifferential& cameraRay, const Scene& sc
         Float uComponent = ctx.sampler.get1D();
         Point2f u = ctx.sampler.get2D();
         Float uMix = ctx.sampler.get1D();
-        const ScatteringMixture mixture{trained, kGuidedBsdfShare};
-        bool sampled = true;
-        if (uMix < mixture.bsdfShare) {
-          bsdf->sampleF(isect.wo, &wi, uComponent, u, &pdf, kAllBxDF, &sampledType);
-          sampled = pdf > 0;
-        } else {
-          Float guidePdf;
-          wi = trained->sample(u, &guidePdf);
-        }
-        sampledType = BxDFType(kDiffuse);
-        f = sampled ? bsdf->f(isect.wo, wi) : Spectrum(0);
-        pdf = sampled ? mixture.pdf(*bsdf, isect.wo, wi, kAllBxDF) : 0;
+        f = mixture.sample(*bsdf, isect.wo, uComponent, u, uMix, &wi, &pdf, &sampledType);
       }
       if (f.isBlack() || pdf == 0) break;
       beta *= f * (absDot(wi, bsdf->shadingNormal()) / pdf);

@@ -6,6 +6,30 @@
 
 namespace candela {
 
+Spectrum ScatteringMixture::sample(const BSDF& bsdf, const Vector3f& wo, Float uComponent,
+                                   const Point2f& u, Float uMix, Vector3f* wi, Float* pdf,
+                                   BxDFType* type) const {
+  // Either branch evaluates the BSDF as the light strategy does.
+  bool sampled = true;
+  if (uMix < bsdfShare) {
+    bsdf.sampleF(wo, wi, uComponent, u, pdf, kAllBxDF, type);
+    sampled = *pdf > 0;
+  } else {
+    Float guidePdf;
+    *wi = guide->sample(u, &guidePdf);
+  }
+  *type = BxDFType(kDiffuse);
+  *pdf = sampled ? this->pdf(bsdf, wo, *wi, kAllBxDF) : 0;
+  return sampled ? bsdf.f(wo, *wi) : Spectrum(0);
+}
+
+ScatteringMixture guidedMixture(const GuidingField* field, const BSDF& bsdf, const Point3f& p) {
+  const int nonSpecular = bsdf.numComponents(kAllBxDF & ~kSpecular);
+  if (field && nonSpecular > 0 && bsdf.numComponents() == nonSpecular)
+    if (const DirectionalQuadtree& d = field->at(p); d.trained()) return {&d, kGuidedBsdfShare};
+  return {};
+}
+
 namespace {
 
 // The light strategy: one sample of `light`, chosen with probability 1 / choices (among

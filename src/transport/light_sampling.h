@@ -4,9 +4,13 @@
 
 #include "reflection/bsdf.h"
 #include "transport/directional_quadtree.h"
+#include "transport/guiding_field.h"
 #include "transport/integrator_context.h"
 
 namespace candela {
+
+// Müller et al. 2017's fixed share of BSDF sampling in the guided mixture (§5.1).
+inline constexpr Float kGuidedBsdfShare = 0.5f;
 
 // How a path chose its next direction when not by the BSDF alone (path guiding): with
 // probability bsdfShare by the BSDF, else by guide. The light strategy's MIS weight then takes
@@ -18,7 +22,17 @@ struct ScatteringMixture {
     Float p = bsdf.pdf(wo, wi, flags);
     return guide ? bsdfShare * p + (1 - bsdfShare) * guide->pdf(wi) : p;
   }
+  // One sample of the mixture (guide set): by the BSDF when uMix < bsdfShare, with uComponent
+  // and u, else by the guide with u. Returns the BSDF's value for *wi, *pdf the mixture's density
+  // (0 and black when the BSDF drew nothing); *type is non-specular.
+  Spectrum sample(const BSDF& bsdf, const Vector3f& wo, Float uComponent, const Point2f& u,
+                  Float uMix, Vector3f* wi, Float* pdf, BxDFType* type) const;
 };
+
+// The mixture at p for a guided path (field non-null): the field's distribution there once
+// trained, at a vertex whose BSDF has lobes and none of them specular (a delta has no density
+// to mix); else none (guide null: sample the BSDF alone).
+ScatteringMixture guidedMixture(const GuidingField* field, const BSDF& bsdf, const Point3f& p);
 
 // Radiance reflected at it toward it.wo from light `light`, one sample of each strategy. The two
 // functions below that take the context also attenuate by the scene's volume, if it has one.

@@ -89,35 +89,38 @@ double tAgainst(const std::vector<double>& means, double expected) {
   return (mean - expected) / std::max(std::sqrt(var / double(means.size())), 1e-6 * expected);
 }
 
+// The image means over 8 seeds of scene(false) and scene(true), each within Student's t of
+// 5.41 of expected.
+struct Means {
+  std::vector<double> plain, guided;
+};
+Means expectBothUnbiased(const char* what, std::string (*scene)(bool), double expected) {
+  Means m{imageMeans(scene(false), 8), imageMeans(scene(true), 8)};
+  double tPlain = tAgainst(m.plain, expected), tGuided = tAgainst(m.guided, expected);
+  std::cout << what << ": t = " << tPlain << " (unguided), " << tGuided << " (guided)\n";
+  EXPECT_LT(std::abs(tPlain), 5.41) << what;
+  EXPECT_LT(std::abs(tGuided), 5.41) << what;
+  return m;
+}
+
 TEST(PathGuiding, ClosedSphereMatchesItsClosedForm) {
   double expected = 0;
   for (int k = 0; k <= kDepth; ++k) expected += kEmission * std::pow(kAlbedo, k);
-  std::vector<double> path = imageMeans(sphereScene(false), 8);
-  std::vector<double> guided = imageMeans(sphereScene(true), 8);
-  double tPath = tAgainst(path, expected), tGuided = tAgainst(guided, expected);
-  std::cout << "closed sphere: t = " << tPath << " (path), " << tGuided << " (guided)\n";
-  EXPECT_LT(std::abs(tPath), 5.41);
-  EXPECT_LT(std::abs(tGuided), 5.41);
+  Means m = expectBothUnbiased("closed sphere", sphereScene, expected);
   // Guided directions are not cosine-distributed, so their weights vary: the guided means spread
   // far more over the seeds than unguided ones, which only rounding separates.
-  auto spread = [](const std::vector<double>& m) {
-    return *std::max_element(m.begin(), m.end()) - *std::min_element(m.begin(), m.end());
+  auto spread = [](const std::vector<double>& v) {
+    return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
   };
-  std::cout << "spread of the means: " << spread(path) << " (path), " << spread(guided)
+  std::cout << "spread of the means: " << spread(m.plain) << " (path), " << spread(m.guided)
             << " (guided)\n";
-  EXPECT_GT(spread(guided), 100 * spread(path));
+  EXPECT_GT(spread(m.guided), 100 * spread(m.plain));
 }
 
 TEST(PathGuiding, VolpathInAFoggyClosedSphereMatchesItsClosedForm) {
-  const double expected = kEmission / (1 - kAlbedo);
-  std::vector<double> plain = imageMeans(foggySphereScene(false), 8);
-  std::vector<double> guided = imageMeans(foggySphereScene(true), 8);
-  double tPlain = tAgainst(plain, expected), tGuided = tAgainst(guided, expected);
-  std::cout << "foggy closed sphere: t = " << tPlain << " (volpath), " << tGuided << " (guided)\n";
-  EXPECT_LT(std::abs(tPlain), 5.41);
-  EXPECT_LT(std::abs(tGuided), 5.41);
+  Means m = expectBothUnbiased("foggy closed sphere", foggySphereScene, kEmission / (1 - kAlbedo));
   // The guided directions were taken: the same seeds give other images.
-  EXPECT_NE(plain, guided);
+  EXPECT_NE(m.plain, m.guided);
 }
 
 }  // namespace
